@@ -1,0 +1,23 @@
+#!/usr/bin/env bash
+# Installs every Debian package cerebellum needs. Safe to run twice: skips what is present.
+set -euo pipefail
+packages=(
+  build-essential cmake pkg-config git
+  liblcm-dev liblcm-bin libglib2.0-dev liblcm-java default-jdk-headless
+  libmujoco-dev libeigen3-dev libtomlplusplus-dev libyaml-cpp-dev
+  libgtest-dev libgmock-dev libbenchmark-dev libalglib-dev
+  iproute2 util-linux python3
+)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]} == 0)); then
+  echo "install_deps: all ${#packages[@]} packages present"
+  exit 0
+fi
+echo "install_deps: installing ${missing[*]}"
+sudo_cmd=()
+[[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
+"${sudo_cmd[@]}" apt-get update -qq
+DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"

@@ -1,0 +1,27 @@
+// cerebellum: the open motion-control module. Dispatches the subcommands.
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/sim_command.hpp"
+
+namespace {
+
+constexpr const char* kUsage =
+    "usage: cerebellum <command> [options]\n"
+    "commands:\n"
+    "  sim    run the MC on the simulated CyberDog2 (cerebellum sim --help)\n";
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  const std::vector<std::string> args(argv + 1, argv + argc);
+  if (args.empty() || args[0] == "--help" || args[0] == "-h") {
+    std::fputs(kUsage, args.empty() ? stderr : stdout);
+    return args.empty() ? 2 : 0;
+  }
+  const std::vector<std::string> rest(args.begin() + 1, args.end());
+  if (args[0] == "sim") return cerebellum::run_sim_command(rest);
+  std::fprintf(stderr, "cerebellum: unknown command '%s' (accepted: sim)\n%s", args[0].c_str(), kUsage);
+  return 2;
+}

@@ -1,0 +1,168 @@
+#include "app/mc_config.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+namespace cerebellum {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string join(const std::set<std::string>& words) {
+  std::string out;
+  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
+  return out;
+}
+
+// reads one mapping of the file, remembering which keys exist so unknown ones are reported
+class SectionReader {
+ public:
+  SectionReader(const YAML::Node& node, std::string file, std::string section, std::set<std::string> accepted)
+      : node_(node), file_(std::move(file)), section_(std::move(section)), accepted_(std::move(accepted)) {
+    if (!node_.IsMap()) fail(section_, "must be a mapping of keys (accepted: " + join(accepted_) + ")");
+    for (const auto& entry : node_) {
+      const std::string key = entry.first.as<std::string>();
+      if (!accepted_.count(key)) fail(section_ + "." + key, "is not a known key (accepted: " + join(accepted_) + ")");
+    }
+  }
+
+  void number(const std::string& key, double& value, double lower, double upper) const {
+    if (!node_[key]) return;
+    double parsed = 0.0;
+    try {
+      parsed = node_[key].as<double>();
+    } catch (const YAML::Exception&) {
+      fail(qualified(key), "must be a number in [" + format(lower) + ", " + format(upper) + "], got '" +
+                               scalar(key) + "'");
+    }
+    if (!std::isfinite(parsed) || parsed < lower || parsed > upper) {
+      fail(qualified(key), "must be in [" + format(lower) + ", " + format(upper) + "], got " + scalar(key));
+    }
+    value = parsed;
+  }
+
+  void flag(const std::string& key, bool& value) const {
+    if (!node_[key]) return;
+    try {
+      value = node_[key].as<bool>();
+    } catch (const YAML::Exception&) {
+      fail(qualified(key), "must be true or false, got '" + scalar(key) + "'");
+    }
+  }
+
+  void unsigned_integer(const std::string& key, unsigned& value) const {
+    if (!node_[key]) return;
+    try {
+      value = node_[key].as<unsigned>();
+    } catch (const YAML::Exception&) {
+      fail(qualified(key), "must be an integer >= 0, got '" + scalar(key) + "'");
+    }
+  }
+
+  void text(const std::string& key, std::string& value, const std::set<std::string>& choices = {}) const {
+    if (!node_[key]) return;
+    if (!node_[key].IsScalar()) fail(qualified(key), "must be a string");
+    const std::string parsed = node_[key].as<std::string>();
+    if (!choices.empty() && !choices.count(parsed)) {
+      fail(qualified(key), "must be one of: " + join(choices) + "; got '" + parsed + "'");
+    }
+    value = parsed;
+  }
+
+  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
+    throw ConfigError("config " + file_ + ": " + key + " " + what);
+  }
+
+ private:
+  std::string qualified(const std::string& key) const { return section_ + "." + key; }
+  std::string scalar(const std::string& key) const {
+    return node_[key].IsScalar() ? node_[key].Scalar() : std::string("<not a scalar>");
+  }
+  static std::string format(double v) {
+    std::ostringstream out;
+    out << v;
+    return out.str();
+  }
+
+  YAML::Node node_;
+  std::string file_;
+  std::string section_;
+  std::set<std::string> accepted_;
+};
+
+std::string find_default_model() {
+  for (const char* dir : {CEREBELLUM_SOURCE_MODEL_DIR, CEREBELLUM_INSTALL_MODEL_DIR}) {
+    const fs::path candidate = fs::path(dir) / "cyberdog2.xml";
+    if (fs::is_regular_file(candidate)) return candidate.string();
+  }
+  return (fs::path(CEREBELLUM_INSTALL_MODEL_DIR) / "cyberdog2.xml").string();
+}
+
+void read_robot(const SectionReader& section, const fs::path& base_dir, MujocoBackendConfig& robot) {
+  std::string model;
+  section.text("model", model);
+  if (!model.empty()) {
+    const fs::path path(model);
+    robot.model_path = (path.is_absolute() ? path : base_dir / path).lexically_normal().string();
+  }
+  section.text("initial_pose", robot.initial_keyframe, {"lying", "stand"});
+  section.number("initial_height_m", robot.initial_height_m, 0.05, 2.0);
+  section.flag("sensor_noise", robot.noise.enabled);
+  section.unsigned_integer("seed", robot.noise.seed);
+}
+
+}  // namespace
+
+McConfig default_config() {
+  McConfig config;
+  config.robot.model_path = find_default_model();
+  return config;
+}
+
+McConfig load_config(const std::string& path) {
+  if (!fs::is_regular_file(path)) throw ConfigError("config file not found: " + path);
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError("config " + path + ": not valid YAML: " + e.what());
+  }
+  McConfig config = default_config();
+  if (root.IsNull()) return config;
+  const SectionReader top(root, path, "<top>", {"robot", "loop", "stand_up", "safety"});
+  const fs::path base_dir = fs::absolute(path).parent_path();
+
+  if (root["robot"]) {
+    read_robot(SectionReader(root["robot"], path, "robot",
+                             {"model", "initial_pose", "initial_height_m", "sensor_noise", "seed"}),
+               base_dir, config.robot);
+  }
+  if (root["loop"]) {
+    SectionReader(root["loop"], path, "loop", {"period_s"}).number("period_s", config.loop_period_s, 0.001, 0.01);
+  }
+  if (root["stand_up"]) {
+    const SectionReader s(root["stand_up"], path, "stand_up", {"fold_duration_s", "rise_duration_s", "kp", "kd"});
+    s.number("fold_duration_s", config.stand_up.fold_duration_s, 0.0, 10.0);
+    s.number("rise_duration_s", config.stand_up.rise_duration_s, 0.1, 10.0);
+    s.number("kp", config.stand_up.kp, 0.0, 200.0);
+    s.number("kd", config.stand_up.kd, 0.0, 10.0);
+  }
+  if (root["safety"]) {
+    const SectionReader s(root["safety"], path, "safety",
+                          {"kp_max", "kd_max", "tau_ff_max_nm", "qd_des_max_rad_s", "joint_limit_margin_rad",
+                           "damping_kd"});
+    s.number("kp_max", config.safety.kp_max, 0.0, 200.0);
+    s.number("kd_max", config.safety.kd_max, 0.0, 10.0);
+    s.number("tau_ff_max_nm", config.safety.tau_ff_max_nm, 0.0, 12.0);
+    s.number("qd_des_max_rad_s", config.safety.qd_des_max_rad_s, 0.0, 30.0);
+    s.number("joint_limit_margin_rad", config.safety.joint_limit_margin_rad, 0.0, 0.3);
+    s.number("damping_kd", config.safety.damping_kd, 0.0, 10.0);
+  }
+  return config;
+}
+
+}  // namespace cerebellum

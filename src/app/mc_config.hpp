@@ -1,0 +1,32 @@
+// The MC's configuration: one YAML file, every key documented in docs/configuration.md and
+// validated on load (unknown keys, wrong types and out-of-range values are errors).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "backend/mujoco_backend.hpp"
+#include "control/stand_up_controller.hpp"
+#include "safety/command_guard.hpp"
+
+namespace cerebellum {
+
+struct McConfig {
+  MujocoBackendConfig robot;
+  double loop_period_s = 0.002;
+  StandUpConfig stand_up = default_stand_up_config();
+  GuardLimits safety;
+};
+
+// raised for a bad file, key or value; the message names the file, the key and what is accepted
+class ConfigError : public std::runtime_error {
+ public:
+  using std::runtime_error::runtime_error;
+};
+
+// defaults, with the model found next to the build or install tree
+McConfig default_config();
+// defaults overridden by the file's keys; relative paths are taken relative to the file
+McConfig load_config(const std::string& path);
+
+}  // namespace cerebellum

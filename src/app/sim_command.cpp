@@ -1,0 +1,60 @@
+#include "app/sim_command.hpp"
+
+#include <cstdio>
+#include <exception>
+
+#include "app/console_reporter.hpp"
+#include "app/control_loop.hpp"
+#include "app/mc_config.hpp"
+#include "app/sim_options.hpp"
+#include "app/stop_signal.hpp"
+#include "backend/mujoco_backend.hpp"
+#include "control/stand_up_controller.hpp"
+#include "estimation/kinematic_estimator.hpp"
+
+namespace cerebellum {
+
+int run_sim_command(const std::vector<std::string>& args) {
+  SimOptions options;
+  McConfig config;
+  try {
+    options = parse_sim_options(args);
+    if (options.help) {
+      std::fputs(sim_usage().c_str(), stdout);
+      return 0;
+    }
+    config = options.config_path.empty() ? default_config() : load_config(options.config_path);
+    if (options.seed) config.robot.noise.seed = *options.seed;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cerebellum sim: %s\n", e.what());
+    return 2;
+  }
+
+  StopSignal stop_signal;
+  try {
+    MujocoBackend backend(config.robot);
+    KinematicEstimator estimator;
+    StandUpController stand_up(config.stand_up);
+    ControlLoop loop(backend, estimator, stand_up, config.safety, config.loop_period_s);
+    ConsoleReporter reporter(stdout);
+    loop.add_observer(reporter);
+
+    std::printf("cerebellum ready: simulated CyberDog2 (%s), %.0f Hz loop, speed %s\n",
+                config.robot.model_path.c_str(), 1.0 / config.loop_period_s,
+                options.speed > 0.0 ? std::to_string(options.speed).c_str() : "max");
+    std::fflush(stdout);
+    const RunStats stats = loop.run({options.duration_s, options.speed}, stop_signal.flag());
+    reporter.finish();
+    std::printf("cerebellum stopped: %.2f s robot time in %.2f s wall time (%.1fx real time), %llu ticks, "
+                "%llu late\n",
+                stats.robot_time_s, stats.wall_time_s,
+                stats.wall_time_s > 0 ? stats.robot_time_s / stats.wall_time_s : 0.0,
+                static_cast<unsigned long long>(stats.ticks), static_cast<unsigned long long>(stats.late_ticks));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cerebellum sim: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace cerebellum

@@ -1,0 +1,33 @@
+#include "backend/motor_model.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cerebellum {
+
+double motor_law_torque(double q_des, double qd_des, double kp, double kd, double tau_ff, double q, double qd) {
+  return tau_ff + kp * (q_des - q) + kd * (qd_des - qd);
+}
+
+double limit_motor_torque(double tau_nm, double qd_rad_s, const MotorLimits& limits) {
+  double available = limits.torque_max_nm;
+  const double speed = std::abs(qd_rad_s);
+  if (tau_nm * qd_rad_s > 0.0 && speed > limits.full_torque_speed_rad_s) {
+    const double fraction = (limits.no_load_speed_rad_s - speed) /
+                            (limits.no_load_speed_rad_s - limits.full_torque_speed_rad_s);
+    available *= std::clamp(fraction, 0.0, 1.0);
+  }
+  return std::clamp(tau_nm, -available, available);
+}
+
+MotorThermalModel::MotorThermalModel(const MotorThermalParameters& parameters)
+    : parameters_(parameters), temperature_c_(parameters.ambient_c) {}
+
+void MotorThermalModel::update(double joint_torque_nm, double dt_s) {
+  const double current_a = joint_torque_nm / (parameters_.gear_ratio * parameters_.torque_constant_nm_per_a);
+  const double heating_w = current_a * current_a * parameters_.winding_resistance_ohm;
+  const double cooling_w = (temperature_c_ - parameters_.ambient_c) / parameters_.thermal_resistance_k_per_w;
+  temperature_c_ += (heating_w - cooling_w) * dt_s / parameters_.heat_capacity_j_per_k;
+}
+
+}  // namespace cerebellum

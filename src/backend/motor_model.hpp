@@ -1,0 +1,42 @@
+// What a CyberDog2 joint motor and its driver do with a command: PD + feed-forward law,
+// torque limit, speed-torque curve, and a first-order winding temperature model.
+#pragma once
+
+namespace cerebellum {
+
+struct MotorLimits {
+  double torque_max_nm = 12.0;
+  double full_torque_speed_rad_s = 11.52;  // full torque below this joint speed
+  double no_load_speed_rad_s = 30.5;       // driving torque reaches zero here
+};
+
+// tau = tau_ff + kp (q_des - q) + kd (qd_des - qd)
+double motor_law_torque(double q_des, double qd_des, double kp, double kd, double tau_ff, double q, double qd);
+
+// The driver clamps to +-torque_max. While the torque drives the joint in its direction of
+// motion (tau * qd > 0) the available torque falls linearly from full at full_torque_speed to
+// zero at no_load_speed; braking torque (tau * qd <= 0) is limited by torque_max only.
+double limit_motor_torque(double tau_nm, double qd_rad_s, const MotorLimits& limits);
+
+struct MotorThermalParameters {
+  double ambient_c = 25.0;
+  double thermal_resistance_k_per_w = 1.2;  // winding to ambient
+  double heat_capacity_j_per_k = 60.0;
+  double gear_ratio = 7.75;
+  double torque_constant_nm_per_a = 0.05;   // motor side
+  double winding_resistance_ohm = 0.173;
+};
+
+// copper loss heats the winding, conduction to ambient cools it
+class MotorThermalModel {
+ public:
+  explicit MotorThermalModel(const MotorThermalParameters& parameters);
+  void update(double joint_torque_nm, double dt_s);
+  double temperature_c() const { return temperature_c_; }
+
+ private:
+  MotorThermalParameters parameters_;
+  double temperature_c_;
+};
+
+}  // namespace cerebellum

@@ -1,0 +1,155 @@
+#include "backend/mujoco_backend.hpp"
+
+#include <mujoco/mujoco.h>
+
+#include <cmath>
+#include <filesystem>
+#include <stdexcept>
+
+namespace cerebellum {
+namespace {
+
+constexpr std::array<const char*, kNumLegs> kLegNames{"FR", "FL", "RR", "RL"};
+constexpr std::array<const char*, kJointsPerLeg> kJointNames{"abad", "hip", "knee"};
+
+int require_id(const mjModel* model, mjtObj type, const std::string& name, const std::string& path) {
+  const int id = mj_name2id(model, type, name.c_str());
+  if (id < 0) throw std::runtime_error("model " + path + ": missing element '" + name + "'");
+  return id;
+}
+
+int sensor_address(const mjModel* model, const std::string& name, const std::string& path) {
+  return model->sensor_adr[require_id(model, mjOBJ_SENSOR, name, path)];
+}
+
+}  // namespace
+
+MujocoBackend::MujocoBackend(const MujocoBackendConfig& config)
+    : config_(config), rng_(config.noise.seed) {
+  if (!std::filesystem::is_regular_file(config.model_path)) {
+    throw std::runtime_error("model file not found: " + config.model_path);
+  }
+  char error[1024] = {0};
+  model_ = mj_loadXML(config.model_path.c_str(), nullptr, error, sizeof(error));
+  if (model_ == nullptr) {
+    throw std::runtime_error("model " + config.model_path + " failed to load: " + error);
+  }
+  data_ = mj_makeData(model_);
+
+  // joint and actuator addresses by name, so the model's element order does not matter
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    for (std::size_t j = 0; j < kJointsPerLeg; ++j) {
+      const std::string name = std::string(kLegNames[leg]) + "_" + kJointNames[j];
+      const std::size_t i = joint_index(leg, j);
+      const int joint = require_id(model_, mjOBJ_JOINT, name, config.model_path);
+      qpos_address_[i] = model_->jnt_qposadr[joint];
+      dof_address_[i] = model_->jnt_dofadr[joint];
+      actuator_id_[i] = require_id(model_, mjOBJ_ACTUATOR, name, config.model_path);
+    }
+  }
+  trunk_body_ = require_id(model_, mjOBJ_BODY, "trunk", config.model_path);
+  imu_quat_address_ = sensor_address(model_, "imu_quat", config.model_path);
+  imu_gyro_address_ = sensor_address(model_, "imu_gyro", config.model_path);
+  imu_accel_address_ = sensor_address(model_, "imu_accel", config.model_path);
+
+  const int key = mj_name2id(model_, mjOBJ_KEY, config.initial_keyframe.c_str());
+  if (key < 0) {
+    throw std::runtime_error("model " + config.model_path + ": no keyframe '" + config.initial_keyframe +
+                             "' (accepted: the <key> names of the model, e.g. lying, stand)");
+  }
+  mj_resetDataKeyframe(model_, data_, key);
+  data_->qpos[2] = config.initial_height_m;
+  mj_forward(model_, data_);
+  thermal_.assign(kNumJoints, MotorThermalModel(config.thermal));
+}
+
+MujocoBackend::~MujocoBackend() {
+  mj_deleteData(data_);
+  mj_deleteModel(model_);
+}
+
+SensorFrame MujocoBackend::read() {
+  SensorFrame frame;
+  frame.time_s = data_->time;
+  const SensorNoise& noise = config_.noise;
+  auto noisy = [&](double value, double sigma) {
+    return noise.enabled ? value + sigma * unit_normal_(rng_) : value;
+  };
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    frame.q[i] = noisy(data_->qpos[qpos_address_[i]], noise.joint_position_rad);
+    frame.qd[i] = noisy(data_->qvel[dof_address_[i]], noise.joint_velocity_rad_s);
+    frame.tau[i] = applied_torque_[i];
+    frame.temperature_c[i] = thermal_[i].temperature_c();
+  }
+  for (int k = 0; k < 4; ++k) frame.imu_quat[k] = data_->sensordata[imu_quat_address_ + k];
+  for (int k = 0; k < 3; ++k) {
+    frame.imu_gyro[k] = noisy(data_->sensordata[imu_gyro_address_ + k], noise.gyro_rad_s);
+    frame.imu_accel[k] = noisy(data_->sensordata[imu_accel_address_ + k], noise.accel_m_s2);
+  }
+  return frame;
+}
+
+void MujocoBackend::write(const JointCommand& command) { command_ = command; }
+
+void MujocoBackend::apply_motor_drivers() {
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    const double q = data_->qpos[qpos_address_[i]];
+    const double qd = data_->qvel[dof_address_[i]];
+    const double requested = motor_law_torque(command_.q_des[i], command_.qd_des[i], command_.kp[i],
+                                              command_.kd[i], command_.tau_ff[i], q, qd);
+    const double torque = std::isfinite(requested) ? limit_motor_torque(requested, qd, config_.motor_limits) : 0.0;
+    applied_torque_[i] = torque;
+    data_->ctrl[actuator_id_[i]] = torque;
+  }
+}
+
+void MujocoBackend::advance(double period_s) {
+  const double dt = model_->opt.timestep;
+  const long steps = std::max(1L, std::lround(period_s / dt));
+  for (long s = 0; s < steps; ++s) {
+    // the drivers evaluate their law on the state of this physics step
+    mj_step1(model_, data_);
+    apply_motor_drivers();
+    mj_step2(model_, data_);
+    for (std::size_t i = 0; i < kNumJoints; ++i) thermal_[i].update(applied_torque_[i], dt);
+  }
+  // sensors of the final state
+  mj_forward(model_, data_);
+}
+
+double MujocoBackend::time_s() const { return data_->time; }
+
+double MujocoBackend::physics_timestep_s() const { return model_->opt.timestep; }
+
+GroundTruth MujocoBackend::ground_truth() const {
+  GroundTruth truth;
+  for (int k = 0; k < 3; ++k) {
+    truth.position[k] = data_->qpos[k];
+    truth.velocity_world[k] = data_->qvel[k];
+    truth.angular_velocity_body[k] = data_->qvel[3 + k];
+  }
+  for (int k = 0; k < 4; ++k) truth.quat[k] = data_->qpos[3 + k];
+  return truth;
+}
+
+void MujocoBackend::set_base_pose(const std::array<double, 3>& position, const std::array<double, 4>& quat) {
+  for (int k = 0; k < 3; ++k) data_->qpos[k] = position[k];
+  for (int k = 0; k < 4; ++k) data_->qpos[3 + k] = quat[k];
+  mju_normalize4(data_->qpos + 3);
+  for (int k = 0; k < 6; ++k) data_->qvel[k] = 0.0;
+  mj_forward(model_, data_);
+}
+
+void MujocoBackend::set_joint_positions(const JointArray<double>& q) {
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    data_->qpos[qpos_address_[i]] = q[i];
+    data_->qvel[dof_address_[i]] = 0.0;
+  }
+  mj_forward(model_, data_);
+}
+
+void MujocoBackend::set_external_force(const std::array<double, 3>& force_n) {
+  for (int k = 0; k < 3; ++k) data_->xfrc_applied[6 * trunk_body_ + k] = force_n[k];
+}
+
+}  // namespace cerebellum

@@ -1,0 +1,33 @@
+// Leg kinematics of the CyberDog2-class leg in the SDK joint convention.
+// Frames: "hip frame" = body axes with origin at the leg's abad joint; "body frame" = trunk frame.
+#pragma once
+
+#include <Eigen/Core>
+#include <cstddef>
+
+namespace cerebellum {
+
+using Vec3 = Eigen::Vector3d;
+using Mat3 = Eigen::Matrix3d;
+
+struct LegIkResult {
+  Vec3 q;          // abad, hip, knee (rad)
+  bool reachable;  // false: the target was out of reach and q points at the nearest reachable foot
+};
+
+// position of the abad joint in the body frame
+Vec3 hip_position(std::size_t leg);
+
+// foot centre relative to the abad joint (hip frame)
+Vec3 foot_position_in_hip(std::size_t leg, const Vec3& q);
+Vec3 foot_position_in_body(std::size_t leg, const Vec3& q);
+
+// d(foot position)/dq, the same in hip and body frames
+Mat3 foot_jacobian(std::size_t leg, const Vec3& q);
+
+// joint angles that put the foot at p (hip frame), on the branch a standing robot uses: foot below
+// the abad axis in the leg plane, knee bent backwards (knee < 0)
+LegIkResult inverse_kinematics_in_hip(std::size_t leg, const Vec3& p);
+LegIkResult inverse_kinematics_in_body(std::size_t leg, const Vec3& p);
+
+}  // namespace cerebellum

@@ -1,0 +1,64 @@
+// Physical constants of the CyberDog2-class body (reference: robot-cyberdog2.md), SDK convention.
+#pragma once
+
+#include <array>
+#include <cmath>
+
+#include "core/joint_layout.hpp"
+
+namespace cerebellum::robot {
+
+inline constexpr double kPi = 3.14159265358979323846;
+constexpr double deg(double degrees) { return degrees * kPi / 180.0; }
+
+// geometry (m)
+inline constexpr double kHipX = 0.164;        // abad joint, body frame, +-x
+inline constexpr double kHipY = 0.042;        // abad joint, body frame, +-y
+inline constexpr double kAbadLength = 0.094;  // lateral offset from abad axis to thigh
+inline constexpr double kThighLength = 0.12;
+inline constexpr double kShankLength = 0.17391;
+inline constexpr double kFootRadius = 0.019;
+
+// joint ranges (rad), SDK convention
+struct JointRange {
+  double lower;
+  double upper;
+};
+inline constexpr JointRange kAbadRange{-0.68, 0.68};
+inline constexpr JointRange kFrontHipRange{-1.33, 2.79};
+inline constexpr JointRange kRearHipRange{-0.98, 3.14};
+inline constexpr JointRange kKneeRange{-2.53, -0.52};
+
+constexpr JointRange joint_range(std::size_t index) {
+  const std::size_t leg = index / kJointsPerLeg;
+  switch (index % kJointsPerLeg) {
+    case 0: return kAbadRange;
+    case 1: return is_front_leg(leg) ? kFrontHipRange : kRearHipRange;
+    default: return kKneeRange;
+  }
+}
+
+// actuators
+inline constexpr double kGearRatio = 7.75;
+inline constexpr double kTorqueMaxNm = 12.0;
+inline constexpr double kFullTorqueSpeedRadS = 11.52;  // joint side; full torque below this
+inline constexpr double kNoLoadSpeedRadS = 30.5;       // joint side; motoring torque falls to 0 here
+inline constexpr double kMotorKt = 0.05;               // N m / A, motor side
+inline constexpr double kMotorResistanceOhm = 0.173;
+
+// whole-body figures the controllers use
+inline constexpr double kTotalMassKg = 8.52;  // body + legs + rotors of the MJCF model
+inline constexpr double kMpcMassKg = 8.3644;
+inline constexpr std::array<double, 3> kMpcInertiaDiag{0.07641, 0.17843, 0.197579};
+
+// default poses per leg (abad, hip, knee), SDK convention
+inline constexpr std::array<double, 3> kStandPose{0.0, deg(45.0), deg(-70.0)};
+inline constexpr std::array<double, 3> kLyingPose{0.0, deg(80.0), deg(-135.0)};
+
+inline JointArray<double> whole_body_pose(const std::array<double, 3>& leg_pose) {
+  JointArray<double> q{};
+  for (std::size_t i = 0; i < kNumJoints; ++i) q[i] = leg_pose[i % kJointsPerLeg];
+  return q;
+}
+
+}  // namespace cerebellum::robot

@@ -1,0 +1,37 @@
+// What the estimator believes about the robot; the only robot state controllers see.
+#pragma once
+
+#include <Eigen/Core>
+#include <Eigen/Geometry>
+#include <array>
+
+#include "core/types.hpp"
+
+namespace cerebellum {
+
+struct RobotState {
+  double time_s = 0.0;
+  // joints, SDK convention
+  JointArray<double> q{};
+  JointArray<double> qd{};
+  JointArray<double> tau{};
+  JointArray<double> temperature_c{};
+  // trunk
+  Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // body to world
+  Eigen::Vector3d rpy = Eigen::Vector3d::Zero();                    // roll, pitch, yaw (ZYX)
+  Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
+  Eigen::Vector3d omega_world = Eigen::Vector3d::Zero();
+  Eigen::Vector3d accel_body = Eigen::Vector3d::Zero();   // specific force minus gravity
+  Eigen::Vector3d accel_world = Eigen::Vector3d::Zero();
+  Eigen::Vector3d position_world = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity_world = Eigen::Vector3d::Zero();
+  Eigen::Vector3d velocity_body = Eigen::Vector3d::Zero();
+  // trunk height above the ground under the stance feet (m)
+  double height_m = 0.0;
+  // per leg: foot position in the body frame and contact probability 0..1
+  std::array<Eigen::Vector3d, kNumLegs> foot_position_body{};
+  std::array<double, kNumLegs> contact{};
+  bool valid = false;  // false until the first good sensor frame, and after NaN input
+};
+
+}  // namespace cerebellum

@@ -1,0 +1,35 @@
+// Value types exchanged between the stages of the control cycle.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "core/joint_layout.hpp"
+
+namespace cerebellum {
+
+// what the robot's sensors say at one instant (SDK joint convention)
+struct SensorFrame {
+  double time_s = 0.0;
+  JointArray<double> q{};        // rad
+  JointArray<double> qd{};       // rad/s
+  JointArray<double> tau{};      // N m, torque the motor produced
+  JointArray<double> temperature_c{};
+  std::array<double, 4> imu_quat{1.0, 0.0, 0.0, 0.0};  // w, x, y, z, body to world
+  std::array<double, 3> imu_gyro{};                    // rad/s, body frame
+  std::array<double, 3> imu_accel{};                   // m/s^2, body frame, includes gravity
+};
+
+// what the motors are told; each motor runs tau = tau_ff + kp (q_des - q) + kd (qd_des - qd)
+struct JointCommand {
+  JointArray<double> q_des{};
+  JointArray<double> qd_des{};
+  JointArray<double> kp{};
+  JointArray<double> kd{};
+  JointArray<double> tau_ff{};
+};
+
+// zero gains and torques: the motors are passive
+inline JointCommand passive_command() { return JointCommand{}; }
+
+}  // namespace cerebellum
