@@ -1,20 +1,29 @@
 #include "app/control_loop.hpp"
 
-#include <chrono>
+#include <cmath>
 #include <stdexcept>
 #include <thread>
 
 namespace cerebellum {
 
 ControlLoop::ControlLoop(RobotBackend& backend, StateEstimator& estimator, MotionController& controller,
-                         const GuardLimits& guard_limits, double period_s)
+                         const GuardLimits& guard_limits, double period_s, double substep_s)
     : backend_(backend), estimator_(estimator), controller_(controller), guard_limits_(guard_limits),
-      period_s_(period_s) {
+      period_s_(period_s), substeps_(0) {
   if (!(period_s > 0.0)) throw std::invalid_argument("control period must be > 0 s");
+  if (!(substep_s > 0.0) || substep_s > period_s) throw std::invalid_argument("substep must be in (0, period]");
+  const double ratio = period_s / substep_s;
+  substeps_ = static_cast<int>(std::lround(ratio));
+  if (std::abs(ratio - substeps_) > 1e-9) throw std::invalid_argument("substep must divide the control period");
   observers_.reserve(8);
+  substep_participants_.reserve(4);
 }
 
 void ControlLoop::add_observer(CycleObserver& observer) { observers_.push_back(&observer); }
+
+void ControlLoop::add_substep_participant(SubstepParticipant& participant) {
+  substep_participants_.push_back(&participant);
+}
 
 const CycleRecord& ControlLoop::tick() {
   // read
@@ -28,34 +37,60 @@ const CycleRecord& ControlLoop::tick() {
   // write, then the robot runs one period
   backend_.write(record_.command);
   for (CycleObserver* observer : observers_) observer->on_cycle(record_);
-  backend_.advance(period_s_);
+  run_substeps();
   ++record_.tick;
   return record_;
+}
+
+void ControlLoop::run_substeps() {
+  const double substep_s = period_s_ / substeps_;
+  for (int k = 0; k < substeps_; ++k) {
+    if (!substep_participants_.empty()) {
+      const SensorFrame frame = backend_.read();
+      JointCommand command = record_.command;
+      bool replaced = false;
+      for (SubstepParticipant* participant : substep_participants_) replaced |= participant->on_substep(frame, command);
+      if (replaced) {
+        guard_command(record_.state, command, guard_limits_);
+        backend_.write(command);
+      }
+    }
+    pace_until(backend_.time_s());
+    backend_.advance(substep_s);
+  }
+}
+
+void ControlLoop::pace_until(double robot_time_s) {
+  if (pace_speed_ <= 0.0) return;
+  using Clock = std::chrono::steady_clock;
+  const double wall_offset_s = (robot_time_s - pace_robot_start_s_) / pace_speed_;
+  const Clock::time_point deadline =
+      pace_wall_start_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wall_offset_s));
+  const double substep_wall_s = period_s_ / substeps_ / pace_speed_;
+  if (Clock::now() > deadline + std::chrono::duration<double>(substep_wall_s)) {
+    ++late_substeps_;
+  } else {
+    std::this_thread::sleep_until(deadline);
+  }
 }
 
 RunStats ControlLoop::run(const RunOptions& options, const std::atomic<bool>& stop) {
   using Clock = std::chrono::steady_clock;
   RunStats stats;
-  const Clock::time_point wall_start = Clock::now();
-  const double robot_start = backend_.time_s();
-  const bool paced = options.speed > 0.0;
+  pace_speed_ = options.speed;
+  pace_robot_start_s_ = backend_.time_s();
+  pace_wall_start_ = Clock::now();
+  late_substeps_ = 0;
   while (!stop.load(std::memory_order_relaxed)) {
-    const double elapsed = backend_.time_s() - robot_start;
+    const double elapsed = backend_.time_s() - pace_robot_start_s_;
     if (options.duration_s >= 0.0 && elapsed >= options.duration_s - 1e-9) break;
-    if (paced) {
-      const auto deadline = wall_start + std::chrono::duration_cast<Clock::duration>(
-                                             std::chrono::duration<double>(elapsed / options.speed));
-      if (Clock::now() > deadline + std::chrono::duration<double>(period_s_ / options.speed)) {
-        ++stats.late_ticks;
-      } else {
-        std::this_thread::sleep_until(deadline);
-      }
-    }
     tick();
     ++stats.ticks;
   }
-  stats.robot_time_s = backend_.time_s() - robot_start;
-  stats.wall_time_s = std::chrono::duration<double>(Clock::now() - wall_start).count();
+  stats.late_substeps = late_substeps_;
+  stats.robot_time_s = backend_.time_s() - pace_robot_start_s_;
+  stats.wall_time_s = std::chrono::duration<double>(Clock::now() - pace_wall_start_).count();
+  pace_speed_ = 0.0;
   return stats;
 }
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
 #include <cstdint>
 #include <vector>
 
@@ -29,6 +30,17 @@ class CycleObserver {
   virtual void on_cycle(const CycleRecord& record) = 0;
 };
 
+// runs at every substep of a control period (each physics_substep_s of robot time), after the
+// control stage on substep 0: it sees the newest sensor frame and may replace the command the
+// motors run until the next substep (the loop guards the replacement). For interfaces with a
+// faster handshake than the control tick, such as the 1 ms shared-memory interface.
+class SubstepParticipant {
+ public:
+  virtual ~SubstepParticipant() = default;
+  // return true when command was replaced
+  virtual bool on_substep(const SensorFrame& frame, JointCommand& command) = 0;
+};
+
 struct RunOptions {
   double duration_s = -1.0;  // simulated/robot seconds to run; < 0 runs until stopped
   double speed = 1.0;        // real-time factor to pace at; <= 0 runs as fast as possible (lockstep)
@@ -36,17 +48,19 @@ struct RunOptions {
 
 struct RunStats {
   std::uint64_t ticks = 0;
-  std::uint64_t late_ticks = 0;  // paced mode: ticks that started after their deadline
+  std::uint64_t late_substeps = 0;  // paced mode: substeps that started a whole substep late
   double robot_time_s = 0.0;
   double wall_time_s = 0.0;
 };
 
 class ControlLoop {
  public:
+  // period_s: the control tick; substep_s: how often substep participants run (divides period_s)
   ControlLoop(RobotBackend& backend, StateEstimator& estimator, MotionController& controller,
-              const GuardLimits& guard_limits, double period_s);
+              const GuardLimits& guard_limits, double period_s, double substep_s = 0.001);
 
   void add_observer(CycleObserver& observer);
+  void add_substep_participant(SubstepParticipant& participant);
   // one full cycle
   const CycleRecord& tick();
   RunStats run(const RunOptions& options, const std::atomic<bool>& stop);
@@ -55,13 +69,24 @@ class ControlLoop {
   const CycleRecord& last_cycle() const { return record_; }
 
  private:
+  void run_substeps();
+  // paced runs: sleep until the wall-clock time of robot time t; no-op when not pacing
+  void pace_until(double robot_time_s);
+
   RobotBackend& backend_;
   StateEstimator& estimator_;
   MotionController& controller_;
   GuardLimits guard_limits_;
   double period_s_;
+  int substeps_;
   CycleRecord record_;
   std::vector<CycleObserver*> observers_;
+  std::vector<SubstepParticipant*> substep_participants_;
+  // pacing state of the current run()
+  double pace_speed_ = 0.0;
+  double pace_robot_start_s_ = 0.0;
+  std::chrono::steady_clock::time_point pace_wall_start_{};
+  std::uint64_t late_substeps_ = 0;
 };
 
 }  // namespace cerebellum

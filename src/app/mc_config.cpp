@@ -133,9 +133,14 @@ McConfig load_config(const std::string& path) {
   }
   McConfig config = default_config();
   if (root.IsNull()) return config;
-  const SectionReader top(root, path, "<top>", {"robot", "loop", "stand_up", "safety"});
+  const SectionReader top(root, path, "<top>", {"mc", "robot", "loop", "stand_up", "safety"});
   const fs::path base_dir = fs::absolute(path).parent_path();
 
+  if (root["mc"]) {
+    std::string startup = "stand";
+    SectionReader(root["mc"], path, "mc", {"startup"}).text("startup", startup, {"stand", "off", "damper"});
+    config.startup = startup == "off" ? Startup::Off : startup == "damper" ? Startup::Damper : Startup::Stand;
+  }
   if (root["robot"]) {
     read_robot(SectionReader(root["robot"], path, "robot",
                              {"model", "initial_pose", "initial_height_m", "sensor_noise", "seed"}),

@@ -11,7 +11,15 @@
 
 namespace cerebellum {
 
+// what the MC does by itself after start
+enum class Startup {
+  Stand,    // stand up and hold (the default demo)
+  Off,      // motors passive; low-level clients may take over
+  Damper,   // joint damping (PureDamper); low-level clients may take over
+};
+
 struct McConfig {
+  Startup startup = Startup::Stand;
   MujocoBackendConfig robot;
   double loop_period_s = 0.002;
   StandUpConfig stand_up = default_stand_up_config();

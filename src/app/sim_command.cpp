@@ -7,8 +7,10 @@
 #include "app/control_loop.hpp"
 #include "app/mc_config.hpp"
 #include "app/sim_options.hpp"
+#include "app/source_arbiter.hpp"
 #include "app/stop_signal.hpp"
 #include "backend/mujoco_backend.hpp"
+#include "control/passive_controller.hpp"
 #include "control/stand_up_controller.hpp"
 #include "estimation/kinematic_estimator.hpp"
 
@@ -34,8 +36,16 @@ int run_sim_command(const std::vector<std::string>& args) {
   try {
     MujocoBackend backend(config.robot);
     KinematicEstimator estimator;
+    // the MC's own behaviour at start, then the client interfaces that may take the robot over
     StandUpController stand_up(config.stand_up);
-    ControlLoop loop(backend, estimator, stand_up, config.safety, config.loop_period_s);
+    PassiveController off(0.0);
+    PassiveController damper(config.safety.damping_kd);
+    MotionController& startup = config.startup == Startup::Stand ? static_cast<MotionController&>(stand_up)
+                                : config.startup == Startup::Off ? static_cast<MotionController&>(off)
+                                                                  : static_cast<MotionController&>(damper);
+    FixedOwnBehaviour own(startup, config.startup != Startup::Stand);
+    SourceArbiter arbiter(own);
+    ControlLoop loop(backend, estimator, arbiter, config.safety, config.loop_period_s);
     ConsoleReporter reporter(stdout);
     loop.add_observer(reporter);
 
@@ -46,10 +56,10 @@ int run_sim_command(const std::vector<std::string>& args) {
     const RunStats stats = loop.run({options.duration_s, options.speed}, stop_signal.flag());
     reporter.finish();
     std::printf("cerebellum stopped: %.2f s robot time in %.2f s wall time (%.1fx real time), %llu ticks, "
-                "%llu late\n",
+                "%llu late substeps\n",
                 stats.robot_time_s, stats.wall_time_s,
                 stats.wall_time_s > 0 ? stats.robot_time_s / stats.wall_time_s : 0.0,
-                static_cast<unsigned long long>(stats.ticks), static_cast<unsigned long long>(stats.late_ticks));
+                static_cast<unsigned long long>(stats.ticks), static_cast<unsigned long long>(stats.late_substeps));
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cerebellum sim: %s\n", e.what());
     return 1;

@@ -69,6 +69,11 @@ MujocoBackend::~MujocoBackend() {
 }
 
 SensorFrame MujocoBackend::read() {
+  // sensors of the current state (mj_step2 leaves those of the state before integration)
+  if (sensors_stale_) {
+    mj_forward(model_, data_);
+    sensors_stale_ = false;
+  }
   SensorFrame frame;
   frame.time_s = data_->time;
   const SensorNoise& noise = config_.noise;
@@ -113,8 +118,7 @@ void MujocoBackend::advance(double period_s) {
     mj_step2(model_, data_);
     for (std::size_t i = 0; i < kNumJoints; ++i) thermal_[i].update(applied_torque_[i], dt);
   }
-  // sensors of the final state
-  mj_forward(model_, data_);
+  sensors_stale_ = true;
 }
 
 double MujocoBackend::time_s() const { return data_->time; }

@@ -80,6 +80,7 @@ class MujocoBackend final : public RobotBackend {
   int imu_gyro_address_ = -1;
   int imu_accel_address_ = -1;
   JointArray<double> applied_torque_{};
+  bool sensors_stale_ = false;
   std::vector<MotorThermalModel> thermal_;
   std::mt19937 rng_;
   std::normal_distribution<double> unit_normal_{0.0, 1.0};

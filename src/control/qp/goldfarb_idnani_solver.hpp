@@ -56,7 +56,8 @@ class GoldfarbIdnaniSolver final : public QpSolver {
   double load_constraint(const QpProblem& problem, Eigen::Index id);
   void compute_directions();
   StepLengths step_lengths(double slack) const;
-  void take_step(double step, double& new_multiplier);
+  // x += step z (when move_primal), u -= step r, new constraint's multiplier += step
+  void take_step(double step, bool move_primal, double& new_multiplier);
   void add_active(Eigen::Index id, double multiplier);
   void drop_active(Eigen::Index position);
   void write_result(const QpProblem& problem, QpSolution& solution);

@@ -1,0 +1,27 @@
+#include "app/source_arbiter.hpp"
+
+namespace cerebellum {
+
+SourceArbiter::SourceArbiter(OwnBehaviour& own) : own_(own) { sources_.reserve(4); }
+
+void SourceArbiter::add_low_level_source(LowLevelSource& source) { sources_.push_back(&source); }
+
+void SourceArbiter::compute(const RobotState& state, JointCommand& command) {
+  for (LowLevelSource* source : sources_) {
+    if (source == latched_ || !source->wants_control()) continue;
+    if (latched_ == nullptr && own_.allows_low_level_latch()) {
+      latched_ = source;
+      source->on_latched(state);
+    } else {
+      ++refusals_;
+      source->on_refused(latched_ != nullptr ? latched_->name() : "the MC (not in Off or PureDamper)");
+    }
+  }
+  if (latched_ != nullptr) {
+    latched_->compute(state, command);
+  } else {
+    own_.compute(state, command);
+  }
+}
+
+}  // namespace cerebellum
