@@ -2,6 +2,7 @@
 // around a known point x0 (equalities pass through it, bounds bracket it).
 #pragma once
 
+#include <algorithm>
 #include <limits>
 #include <random>
 

@@ -1,0 +1,50 @@
+// Real-time factor of the whole control loop (MuJoCo physics at 1 kHz + estimator + stand-up
+// controller + guard at 500 Hz) in lockstep headless mode. Run pinned to one core
+// (bench/run.sh does): robot seconds per wall second is reported as "rtf".
+#include <benchmark/benchmark.h>
+
+#include <string>
+
+#include "app/control_loop.hpp"
+#include "backend/mujoco_backend.hpp"
+#include "control/stand_up_controller.hpp"
+#include "estimation/kinematic_estimator.hpp"
+
+namespace {
+
+using namespace cerebellum;
+
+MujocoBackendConfig bench_config(bool noise) {
+  MujocoBackendConfig config;
+  config.model_path = std::string(CEREBELLUM_MODEL_DIR) + "/cyberdog2.xml";
+  config.noise.enabled = noise;
+  return config;
+}
+
+// one iteration = 1 s of robot time (500 ticks) of a robot standing up and holding
+void BM_StandLoopOneRobotSecond(benchmark::State& bench) {
+  MujocoBackend backend(bench_config(bench.range(0) != 0));
+  KinematicEstimator estimator;
+  StandUpController stand_up(default_stand_up_config());
+  ControlLoop loop(backend, estimator, stand_up, GuardLimits{}, 0.002);
+  double robot_seconds = 0.0;
+  for (auto _ : bench) {
+    for (int i = 0; i < 500; ++i) loop.tick();
+    robot_seconds += 1.0;
+  }
+  bench.counters["rtf"] = benchmark::Counter(robot_seconds, benchmark::Counter::kIsRate);
+  bench.counters["tick_us"] = benchmark::Counter(robot_seconds * 500 * 1e-6,
+                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+}
+BENCHMARK(BM_StandLoopOneRobotSecond)->Arg(0)->Arg(1)->ArgName("noise")->Unit(benchmark::kMillisecond)->MinTime(2.0);
+
+// the physics alone: one MuJoCo step with the motor drivers
+void BM_PhysicsStep(benchmark::State& bench) {
+  MujocoBackend backend(bench_config(false));
+  for (auto _ : bench) backend.advance(0.001);
+}
+BENCHMARK(BM_PhysicsStep)->Unit(benchmark::kMicrosecond);
+
+}  // namespace
+
+BENCHMARK_MAIN();

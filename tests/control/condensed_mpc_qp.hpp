@@ -1,0 +1,199 @@
+// QPs shaped like the locomotion controllers': a condensed single-rigid-body MPC over stance-foot
+// forces with friction pyramids, and the 12-variable balance QP. Used by tests and benchmarks.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <limits>
+#include <random>
+#include <vector>
+
+#include <Eigen/Dense>
+
+#include "control/qp/qp_problem.hpp"
+#include "core/robot_model.hpp"
+
+namespace cerebellum::qp::fixtures {
+
+using StanceSchedule = std::vector<std::array<bool, 4>>;  // per MPC step, legs FR, FL, RR, RL
+
+struct ForceLimits {
+  double mu = 0.4;
+  double fz_max_n = 150.0;
+};
+
+inline constexpr int kMpcStates = 13;  // rpy, p, omega, v, gravity
+inline constexpr double kGravity = 9.81;
+
+// trot: diagonal pairs FR+RL and FL+RR alternate every half period (2 stance feet per step)
+inline StanceSchedule trot_schedule(int horizon, int half_period_steps) {
+  StanceSchedule s(static_cast<std::size_t>(horizon));
+  for (int k = 0; k < horizon; ++k) {
+    const bool first_pair = (k / half_period_steps) % 2 == 0;
+    s[static_cast<std::size_t>(k)] = {first_pair, !first_pair, !first_pair, first_pair};
+  }
+  return s;
+}
+
+inline StanceSchedule stand_schedule(int horizon) {
+  return StanceSchedule(static_cast<std::size_t>(horizon), {true, true, true, true});
+}
+
+inline Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
+  Eigen::Matrix3d m;
+  m << 0.0, -r.z(), r.y(), r.z(), 0.0, -r.x(), -r.y(), r.x(), 0.0;
+  return m;
+}
+
+// feet under the hips of a body standing 0.25 m high, jittered by up to +-2 cm
+inline std::array<Eigen::Vector3d, 4> jittered_feet(std::mt19937& rng) {
+  std::uniform_real_distribution<double> jitter(-0.02, 0.02);
+  const double y = robot::kHipY + robot::kAbadLength;
+  const std::array<Eigen::Vector3d, 4> nominal{
+      Eigen::Vector3d(robot::kHipX, -y, -0.25), Eigen::Vector3d(robot::kHipX, y, -0.25),
+      Eigen::Vector3d(-robot::kHipX, -y, -0.25), Eigen::Vector3d(-robot::kHipX, y, -0.25)};
+  std::array<Eigen::Vector3d, 4> feet;
+  for (std::size_t i = 0; i < 4; ++i) {
+    feet[i] = nominal[i] + Eigen::Vector3d(jitter(rng), jitter(rng), jitter(rng));
+  }
+  return feet;
+}
+
+// appends the 5 friction-pyramid rows of one foot whose force starts at variable `col`
+inline void add_friction_rows(QpProblem& p, Eigen::Index& row, Eigen::Index col,
+                              const ForceLimits& limits) {
+  constexpr double inf = std::numeric_limits<double>::infinity();
+  const double mu = limits.mu;
+  // +-fx - mu fz <= 0, +-fy - mu fz <= 0, 0 <= fz <= fz_max
+  const std::array<std::array<double, 3>, 4> faces{
+      {{1.0, 0.0, -mu}, {-1.0, 0.0, -mu}, {0.0, 1.0, -mu}, {0.0, -1.0, -mu}}};
+  for (const auto& face : faces) {
+    for (Eigen::Index a = 0; a < 3; ++a) p.ineq_matrix(row, col + a) = face[static_cast<std::size_t>(a)];
+    p.ineq_lower(row) = -inf;
+    p.ineq_upper(row) = 0.0;
+    ++row;
+  }
+  p.ineq_matrix(row, col + 2) = 1.0;
+  p.ineq_lower(row) = 0.0;
+  p.ineq_upper(row) = limits.fz_max_n;
+  ++row;
+}
+
+// condensed MPC: states x_{k+1} = Ad x_k + Bd_k u_k (yaw-only single rigid body, 30 ms steps,
+// first-order discretisation), cost sum |x_k - x_ref|_L^2 + alpha |u|^2 with the reference
+// weights; only stance-foot forces are variables. x0 and the feet are randomised.
+inline QpProblem make_condensed_mpc_qp(const StanceSchedule& stance, std::mt19937& rng,
+                                       const ForceLimits& limits = {}) {
+  const int horizon = static_cast<int>(stance.size());
+  const double dt_s = 0.03;
+  const double alpha = 4e-5;
+  const std::array<double, kMpcStates> weights{0.25, 0.25, 10, 2, 2, 50, 0, 0, 0.3,
+                                               0.2,  0.2,  0.1, 0};
+  std::uniform_real_distribution<double> small(-0.05, 0.05);
+  const double yaw = small(rng) * 10.0;
+  const Eigen::Matrix3d rz = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+  const Eigen::Matrix3d inertia_world =
+      rz * Eigen::Vector3d(robot::kMpcInertiaDiag[0], robot::kMpcInertiaDiag[1],
+                           robot::kMpcInertiaDiag[2]).asDiagonal() * rz.transpose();
+  const Eigen::Matrix3d inertia_inv = inertia_world.inverse();
+
+  Eigen::Matrix<double, kMpcStates, kMpcStates> a_cont = Eigen::Matrix<double, kMpcStates, kMpcStates>::Zero();
+  a_cont.block<3, 3>(0, 6) = rz.transpose();
+  a_cont.block<3, 3>(3, 9) = Eigen::Matrix3d::Identity();
+  a_cont(11, 12) = -1.0;
+  const Eigen::Matrix<double, kMpcStates, kMpcStates> a_disc =
+      Eigen::Matrix<double, kMpcStates, kMpcStates>::Identity() + dt_s * a_cont;
+
+  // column offsets of each step's stance-foot forces
+  std::vector<Eigen::Index> step_offset(static_cast<std::size_t>(horizon) + 1, 0);
+  for (int k = 0; k < horizon; ++k) {
+    int feet = 0;
+    for (bool c : stance[static_cast<std::size_t>(k)]) feet += c ? 1 : 0;
+    step_offset[static_cast<std::size_t>(k) + 1] = step_offset[static_cast<std::size_t>(k)] + 3 * feet;
+  }
+  const Eigen::Index n = step_offset.back();
+  const Eigen::Index states = static_cast<Eigen::Index>(kMpcStates) * horizon;
+
+  // stacked prediction X = Aqp x0 + Bqp U
+  Eigen::MatrixXd aqp(states, kMpcStates);
+  Eigen::MatrixXd bqp = Eigen::MatrixXd::Zero(states, n);
+  Eigen::Matrix<double, kMpcStates, kMpcStates> power = a_disc;
+  for (int k = 0; k < horizon; ++k) {
+    aqp.middleRows<kMpcStates>(k * kMpcStates) = power;
+    power = a_disc * power;
+  }
+  for (int j = 0; j < horizon; ++j) {
+    const auto feet = jittered_feet(rng);
+    Eigen::MatrixXd b_step = Eigen::MatrixXd::Zero(kMpcStates, step_offset[static_cast<std::size_t>(j) + 1] - step_offset[static_cast<std::size_t>(j)]);
+    Eigen::Index col = 0;
+    for (std::size_t leg = 0; leg < 4; ++leg) {
+      if (!stance[static_cast<std::size_t>(j)][leg]) continue;
+      b_step.block<3, 3>(6, col) = dt_s * inertia_inv * cross_matrix(feet[leg]);
+      b_step.block<3, 3>(9, col) = (dt_s / robot::kMpcMassKg) * Eigen::Matrix3d::Identity();
+      col += 3;
+    }
+    Eigen::MatrixXd propagated = b_step;
+    for (int k = j; k < horizon; ++k) {
+      bqp.block(k * kMpcStates, step_offset[static_cast<std::size_t>(j)], kMpcStates, b_step.cols()) = propagated;
+      propagated = a_disc * propagated;
+    }
+  }
+
+  // start near a 0.25 m stand, track 0.5 m/s forward at 0.27 m height
+  Eigen::Matrix<double, kMpcStates, 1> x0 = Eigen::Matrix<double, kMpcStates, 1>::Zero();
+  for (int i = 0; i < 12; ++i) x0(i) = small(rng);
+  x0(2) = yaw;
+  x0(5) = 0.25 + small(rng);
+  x0(12) = kGravity;
+  Eigen::VectorXd x_ref(states);
+  for (int k = 0; k < horizon; ++k) {
+    Eigen::Matrix<double, kMpcStates, 1> ref = Eigen::Matrix<double, kMpcStates, 1>::Zero();
+    ref(2) = yaw;
+    ref(3) = 0.5 * dt_s * (k + 1);
+    ref(5) = 0.27;
+    ref(9) = 0.5;
+    ref(12) = kGravity;
+    x_ref.segment<kMpcStates>(k * kMpcStates) = ref;
+  }
+  Eigen::VectorXd l_diag(states);
+  for (Eigen::Index i = 0; i < states; ++i) l_diag(i) = weights[static_cast<std::size_t>(i % kMpcStates)];
+
+  QpProblem p;
+  p.resize({n, 0, 5 * n / 3});
+  const Eigen::MatrixXd weighted_b = l_diag.asDiagonal() * bqp;
+  p.hessian = 2.0 * (bqp.transpose() * weighted_b + alpha * Eigen::MatrixXd::Identity(n, n));
+  p.linear = 2.0 * weighted_b.transpose() * (aqp * x0 - x_ref);
+  Eigen::Index row = 0;
+  for (Eigen::Index col = 0; col < n; col += 3) add_friction_rows(p, row, col, limits);
+  return p;
+}
+
+// balance QP: four stance forces produce a desired body wrench (weight plus a random
+// correction); cost |A f - w|_S^2 + alpha |f|^2, friction pyramids on every foot
+inline QpProblem make_balance_qp(std::mt19937& rng, const ForceLimits& limits = {}) {
+  std::uniform_real_distribution<double> small(-1.0, 1.0);
+  const auto feet = jittered_feet(rng);
+  Eigen::Matrix<double, 6, 12> a;
+  for (std::size_t leg = 0; leg < 4; ++leg) {
+    const Eigen::Index col = 3 * static_cast<Eigen::Index>(leg);
+    a.block<3, 3>(0, col) = Eigen::Matrix3d::Identity();
+    a.block<3, 3>(3, col) = cross_matrix(feet[leg]);
+  }
+  Eigen::Matrix<double, 6, 1> wrench;
+  wrench << 5.0 * small(rng), 5.0 * small(rng), robot::kMpcMassKg * kGravity + 10.0 * small(rng),
+      2.0 * small(rng), 2.0 * small(rng), 1.0 * small(rng);
+  Eigen::Matrix<double, 6, 1> s_diag;
+  s_diag << 1.0, 1.0, 10.0, 20.0, 20.0, 10.0;
+  const double alpha = 1e-3;
+
+  QpProblem p;
+  p.resize({12, 0, 20});
+  p.hessian = 2.0 * (a.transpose() * s_diag.asDiagonal() * a +
+                     alpha * Eigen::Matrix<double, 12, 12>::Identity());
+  p.linear = -2.0 * a.transpose() * s_diag.asDiagonal() * wrench;
+  Eigen::Index row = 0;
+  for (Eigen::Index col = 0; col < 12; col += 3) add_friction_rows(p, row, col, limits);
+  return p;
+}
+
+}  // namespace cerebellum::qp::fixtures
