@@ -27,7 +27,7 @@ extern "C" void* realloc(void* pointer, std::size_t size) noexcept {
   return __libc_realloc(pointer, size);
 }
 
-namespace cerebellum::fixtures {
+namespace cerebellum::qp::fixtures {
 
 AllocationCounter::AllocationCounter() {
   allocations = 0;
@@ -38,4 +38,4 @@ AllocationCounter::~AllocationCounter() { counting = false; }
 
 long AllocationCounter::count() const { return allocations; }
 
-}  // namespace cerebellum::fixtures
+}  // namespace cerebellum::qp::fixtures

@@ -2,7 +2,7 @@
 // allocation_counter.cpp replaces malloc for the whole test program.
 #pragma once
 
-namespace cerebellum::fixtures {
+namespace cerebellum::qp::fixtures {
 
 class AllocationCounter {
  public:
@@ -13,4 +13,4 @@ class AllocationCounter {
   long count() const;
 };
 
-}  // namespace cerebellum::fixtures
+}  // namespace cerebellum::qp::fixtures
