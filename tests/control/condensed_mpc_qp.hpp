@@ -89,8 +89,8 @@ inline QpProblem make_condensed_mpc_qp(const StanceSchedule& stance, std::mt1993
   const double alpha = 4e-5;
   const std::array<double, kMpcStates> weights{0.25, 0.25, 10, 2, 2, 50, 0, 0, 0.3,
                                                0.2,  0.2,  0.1, 0};
-  std::uniform_real_distribution<double> small(-0.05, 0.05);
-  const double yaw = small(rng) * 10.0;
+  std::uniform_real_distribution<double> yaw_rad(-0.5, 0.5);
+  const double yaw = yaw_rad(rng);
   const Eigen::Matrix3d rz = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   const Eigen::Matrix3d inertia_world =
       rz * Eigen::Vector3d(robot::kMpcInertiaDiag[0], robot::kMpcInertiaDiag[1],
@@ -139,19 +139,24 @@ inline QpProblem make_condensed_mpc_qp(const StanceSchedule& stance, std::mt1993
     }
   }
 
-  // start near a 0.25 m stand, track 0.5 m/s forward at 0.27 m height
+  // a disturbed trotting body: tilted, spinning and off the commanded velocity, asked to run
+  // forward at 0.3-1.5 m/s at 0.27 m height with level orientation
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
   Eigen::Matrix<double, kMpcStates, 1> x0 = Eigen::Matrix<double, kMpcStates, 1>::Zero();
-  for (int i = 0; i < 12; ++i) x0(i) = small(rng);
+  x0.head<2>() = 0.15 * Eigen::Vector2d(unit(rng), unit(rng));
   x0(2) = yaw;
-  x0(5) = 0.25 + small(rng);
+  x0(5) = 0.27 + 0.03 * unit(rng);
+  x0.segment<3>(6) = 1.5 * Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
+  x0.segment<3>(9) = Eigen::Vector3d(0.5 + 0.5 * unit(rng), 0.4 * unit(rng), 0.2 * unit(rng));
   x0(12) = kGravity;
+  const double speed_mps = 0.9 + 0.6 * unit(rng);
   Eigen::VectorXd x_ref(states);
   for (int k = 0; k < horizon; ++k) {
     Eigen::Matrix<double, kMpcStates, 1> ref = Eigen::Matrix<double, kMpcStates, 1>::Zero();
     ref(2) = yaw;
-    ref(3) = 0.5 * dt_s * (k + 1);
+    ref(3) = speed_mps * dt_s * (k + 1);
     ref(5) = 0.27;
-    ref(9) = 0.5;
+    ref(9) = speed_mps;
     ref(12) = kGravity;
     x_ref.segment<kMpcStates>(k * kMpcStates) = ref;
   }

@@ -16,7 +16,7 @@ namespace cerebellum::qp {
 
 struct AlglibQpSettings {
   // DENSE-IPM stops when primal and dual infeasibility and the duality gap fall below this
-  double ipm_tolerance = 1e-10;
+  double ipm_tolerance = 1e-12;
   // H is rejected as not convex when a Cholesky pivot <= this ratio times max(diag(H))
   double min_pivot_ratio = 1e-13;
   // an inequality row is reported active when |multiplier| exceeds this
