@@ -7,12 +7,8 @@
 #include "app/control_loop.hpp"
 #include "app/mc_config.hpp"
 #include "app/sim_options.hpp"
-#include "app/source_arbiter.hpp"
+#include "app/mc.hpp"
 #include "app/stop_signal.hpp"
-#include "backend/mujoco_backend.hpp"
-#include "control/passive_controller.hpp"
-#include "control/stand_up_controller.hpp"
-#include "estimation/kinematic_estimator.hpp"
 
 namespace cerebellum {
 
@@ -34,18 +30,9 @@ int run_sim_command(const std::vector<std::string>& args) {
 
   StopSignal stop_signal;
   try {
-    MujocoBackend backend(config.robot);
-    KinematicEstimator estimator;
-    // the MC's own behaviour at start, then the client interfaces that may take the robot over
-    StandUpController stand_up(config.stand_up);
-    PassiveController off(0.0);
-    PassiveController damper(config.safety.damping_kd);
-    MotionController& startup = config.startup == Startup::Stand ? static_cast<MotionController&>(stand_up)
-                                : config.startup == Startup::Off ? static_cast<MotionController&>(off)
-                                                                  : static_cast<MotionController&>(damper);
-    FixedOwnBehaviour own(startup, config.startup != Startup::Stand);
-    SourceArbiter arbiter(own);
-    ControlLoop loop(backend, estimator, arbiter, config.safety, config.loop_period_s);
+    Mc mc(config);
+    ControlLoop& loop = mc.loop();
+    // client interfaces attach here: mc.arbiter() sources, loop observers, substep participants
     ConsoleReporter reporter(stdout);
     loop.add_observer(reporter);
 

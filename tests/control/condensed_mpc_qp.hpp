@@ -81,9 +81,10 @@ inline void add_friction_rows(QpProblem& p, Eigen::Index& row, Eigen::Index col,
 
 // condensed MPC: states x_{k+1} = Ad x_k + Bd_k u_k (yaw-only single rigid body, 30 ms steps,
 // first-order discretisation), cost sum |x_k - x_ref|_L^2 + alpha |u|^2 with the reference
-// weights; only stance-foot forces are variables. x0 and the feet are randomised.
+// weights; only stance-foot forces are variables. The feet are randomised, and so is x0 when
+// `disturbed`.
 inline QpProblem make_condensed_mpc_qp(const StanceSchedule& stance, std::mt19937& rng,
-                                       const ForceLimits& limits = {}) {
+                                       const ForceLimits& limits = {}, bool disturbed = true) {
   const int horizon = static_cast<int>(stance.size());
   const double dt_s = 0.03;
   const double alpha = 4e-5;
@@ -139,17 +140,18 @@ inline QpProblem make_condensed_mpc_qp(const StanceSchedule& stance, std::mt1993
     }
   }
 
-  // a disturbed trotting body: tilted, spinning and off the commanded velocity, asked to run
-  // forward at 0.3-1.5 m/s at 0.27 m height with level orientation
+  // disturbed: a tilted, spinning body off its commanded velocity, asked to run forward at
+  // 0.3-1.5 m/s at 0.27 m height with level orientation; otherwise at rest on its reference
   std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  const double d = disturbed ? 1.0 : 0.0;
   Eigen::Matrix<double, kMpcStates, 1> x0 = Eigen::Matrix<double, kMpcStates, 1>::Zero();
-  x0.head<2>() = 0.15 * Eigen::Vector2d(unit(rng), unit(rng));
+  x0.head<2>() = d * 0.15 * Eigen::Vector2d(unit(rng), unit(rng));
   x0(2) = yaw;
-  x0(5) = 0.27 + 0.03 * unit(rng);
-  x0.segment<3>(6) = 1.5 * Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
-  x0.segment<3>(9) = Eigen::Vector3d(0.5 + 0.5 * unit(rng), 0.4 * unit(rng), 0.2 * unit(rng));
+  x0(5) = 0.27 + d * 0.03 * unit(rng);
+  x0.segment<3>(6) = d * 1.5 * Eigen::Vector3d(unit(rng), unit(rng), unit(rng));
+  x0.segment<3>(9) = d * Eigen::Vector3d(0.5 + 0.5 * unit(rng), 0.4 * unit(rng), 0.2 * unit(rng));
   x0(12) = kGravity;
-  const double speed_mps = 0.9 + 0.6 * unit(rng);
+  const double speed_mps = d * (0.9 + 0.6 * unit(rng));
   Eigen::VectorXd x_ref(states);
   for (int k = 0; k < horizon; ++k) {
     Eigen::Matrix<double, kMpcStates, 1> ref = Eigen::Matrix<double, kMpcStates, 1>::Zero();
@@ -173,7 +175,7 @@ inline QpProblem make_condensed_mpc_qp(const StanceSchedule& stance, std::mt1993
   return p;
 }
 
-// balance QP: four stance forces produce a desired body wrench (weight plus a random
+// balance QP: four stance forces produce a desired body wrench (weight plus a random push
 // correction); cost |A f - w|_S^2 + alpha |f|^2, friction pyramids on every foot
 inline QpProblem make_balance_qp(std::mt19937& rng, const ForceLimits& limits = {}) {
   std::uniform_real_distribution<double> small(-1.0, 1.0);
@@ -185,8 +187,8 @@ inline QpProblem make_balance_qp(std::mt19937& rng, const ForceLimits& limits = 
     a.block<3, 3>(3, col) = cross_matrix(feet[leg]);
   }
   Eigen::Matrix<double, 6, 1> wrench;
-  wrench << 5.0 * small(rng), 5.0 * small(rng), robot::kMpcMassKg * kGravity + 10.0 * small(rng),
-      2.0 * small(rng), 2.0 * small(rng), 1.0 * small(rng);
+  wrench << 25.0 * small(rng), 25.0 * small(rng), robot::kMpcMassKg * kGravity + 20.0 * small(rng),
+      8.0 * small(rng), 8.0 * small(rng), 4.0 * small(rng);
   Eigen::Matrix<double, 6, 1> s_diag;
   s_diag << 1.0, 1.0, 10.0, 20.0, 20.0, 10.0;
   const double alpha = 1e-3;

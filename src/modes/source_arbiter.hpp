@@ -29,6 +29,8 @@ class OwnBehaviour : public MotionController {
  public:
   // only from Off or PureDamper, as on the vendor's MC
   virtual bool allows_low_level_latch() const = 0;
+  // a low-level source has taken the robot until restart
+  virtual void on_handover() {}
 };
 
 class SourceArbiter final : public MotionController {
@@ -46,19 +48,6 @@ class SourceArbiter final : public MotionController {
   std::vector<LowLevelSource*> sources_;
   LowLevelSource* latched_ = nullptr;
   std::uint64_t refusals_ = 0;
-};
-
-// wraps a controller as the MC's own behaviour, with a fixed answer on the latch question
-class FixedOwnBehaviour final : public OwnBehaviour {
- public:
-  FixedOwnBehaviour(MotionController& controller, bool allows_latch)
-      : controller_(controller), allows_latch_(allows_latch) {}
-  void compute(const RobotState& state, JointCommand& command) override { controller_.compute(state, command); }
-  bool allows_low_level_latch() const override { return allows_latch_; }
-
- private:
-  MotionController& controller_;
-  bool allows_latch_;
 };
 
 }  // namespace cerebellum

@@ -1,5 +1,5 @@
 // One source at a time: latching, refusals, and the MC's own behaviour until then.
-#include "app/source_arbiter.hpp"
+#include "modes/source_arbiter.hpp"
 
 #include <gtest/gtest.h>
 
@@ -8,13 +8,18 @@
 namespace cerebellum {
 namespace {
 
-class ConstantController final : public MotionController {
+// the MC's own behaviour with a fixed answer on the latch question
+class ConstantBehaviour final : public OwnBehaviour {
  public:
-  explicit ConstantController(double kp) : kp_(kp) {}
+  ConstantBehaviour(double kp, bool allows_latch) : kp_(kp), allows_latch_(allows_latch) {}
   void compute(const RobotState&, JointCommand& command) override { command.kp.fill(kp_); }
+  bool allows_low_level_latch() const override { return allows_latch_; }
+  void on_handover() override { ++handovers; }
+  int handovers = 0;
 
  private:
   double kp_;
+  bool allows_latch_;
 };
 
 class ScriptedSource final : public LowLevelSource {
@@ -37,8 +42,7 @@ class ScriptedSource final : public LowLevelSource {
 };
 
 TEST(SourceArbiter, OwnBehaviourRunsUntilASourceAsks) {
-  ConstantController own_controller(1.0);
-  FixedOwnBehaviour own(own_controller, true);
+  ConstantBehaviour own(1.0, true);
   SourceArbiter arbiter(own);
   ScriptedSource sdk("motor_sdk", 2.0);
   arbiter.add_low_level_source(sdk);
@@ -52,6 +56,7 @@ TEST(SourceArbiter, OwnBehaviourRunsUntilASourceAsks) {
   EXPECT_EQ(command.kp[0], 2.0);
   EXPECT_EQ(arbiter.latched(), &sdk);
   EXPECT_EQ(sdk.latched, 1);
+  EXPECT_EQ(own.handovers, 1);
   // latched until restart, even when the client goes quiet
   sdk.wants = false;
   arbiter.compute(RobotState{}, command);
@@ -59,8 +64,7 @@ TEST(SourceArbiter, OwnBehaviourRunsUntilASourceAsks) {
 }
 
 TEST(SourceArbiter, SecondSourceIsRefusedWhileTheFirstHoldsTheRobot) {
-  ConstantController own_controller(1.0);
-  FixedOwnBehaviour own(own_controller, true);
+  ConstantBehaviour own(1.0, true);
   SourceArbiter arbiter(own);
   ScriptedSource sdk("motor_sdk", 2.0);
   ScriptedSource shm("shm", 3.0);
@@ -77,8 +81,7 @@ TEST(SourceArbiter, SecondSourceIsRefusedWhileTheFirstHoldsTheRobot) {
 }
 
 TEST(SourceArbiter, NoLatchWhileTheMcForbidsIt) {
-  ConstantController own_controller(1.0);
-  FixedOwnBehaviour own(own_controller, false);
+  ConstantBehaviour own(1.0, false);
   SourceArbiter arbiter(own);
   ScriptedSource sdk("motor_sdk", 2.0);
   arbiter.add_low_level_source(sdk);

@@ -1,4 +1,4 @@
-#include "app/source_arbiter.hpp"
+#include "modes/source_arbiter.hpp"
 
 namespace cerebellum {
 
@@ -11,6 +11,7 @@ void SourceArbiter::compute(const RobotState& state, JointCommand& command) {
     if (source == latched_ || !source->wants_control()) continue;
     if (latched_ == nullptr && own_.allows_low_level_latch()) {
       latched_ = source;
+      own_.on_handover();
       source->on_latched(state);
     } else {
       ++refusals_;

@@ -1,0 +1,121 @@
+#include "estimation/body_state_estimator.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/leg_kinematics.hpp"
+#include "core/robot_model.hpp"
+
+namespace cerebellum {
+namespace {
+
+// below this total trust no foot says where the ground is
+constexpr double kMinGroundTrust = 0.5;
+
+double ramp(double value, double width) { return width > 0.0 ? std::clamp(value / width, 0.0, 1.0) : 1.0; }
+
+}  // namespace
+
+double force_contact_trust(double contact_probability, double time_in_contact_s, double ramp_s) {
+  return std::clamp(contact_probability, 0.0, 1.0) * ramp(time_in_contact_s, ramp_s);
+}
+
+double scheduled_contact_trust(const LegContactPlan& plan, double ramp_fraction) {
+  const double phase = std::clamp(plan.stance_phase, 0.0, 1.0);
+  return std::clamp(plan.probability, 0.0, 1.0) * ramp(std::min(phase, 1.0 - phase), ramp_fraction);
+}
+
+BodyStateEstimator::BodyStateEstimator(const BodyStateEstimatorConfig& config)
+    : config_(config), kinematic_(config.kinematic), filter_(config.filter) {}
+
+void BodyStateEstimator::reset() {
+  kinematic_.reset();
+  filter_.reset();
+  schedule_.reset();
+  trust_.fill(0.0);
+  time_in_contact_s_.fill(0.0);
+  last_time_s_ = 0.0;
+  ground_z_m_ = 0.0;
+}
+
+bool BodyStateEstimator::set_contact_schedule(const ContactSchedule& schedule) {
+  for (const LegContactPlan& plan : schedule) {
+    if (!std::isfinite(plan.probability) || !std::isfinite(plan.stance_phase)) return false;
+  }
+  schedule_ = schedule;
+  return true;
+}
+
+void BodyStateEstimator::update(const SensorFrame& frame, RobotState& state) {
+  kinematic_.update(frame, state);
+  if (!state.valid) {
+    if (filter_.initialized()) write_state(state);
+    return;
+  }
+  if (!filter_.initialized()) {
+    start_filter(state);
+  } else {
+    const double dt = std::clamp(frame.time_s - last_time_s_, 0.0, config_.max_step_s);
+    update_trust(state, dt);
+    const bool accepted = filter_.predict(state.accel_world, dt, trust_) && filter_.correct(observe_legs(state));
+    state.valid = accepted;
+  }
+  last_time_s_ = frame.time_s;
+  write_state(state);
+}
+
+void BodyStateEstimator::update_trust(const RobotState& state, double dt_s) {
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    time_in_contact_s_[leg] = state.contact[leg] > 0.5 ? time_in_contact_s_[leg] + dt_s : 0.0;
+    trust_[leg] = schedule_ ? scheduled_contact_trust((*schedule_)[leg], config_.schedule_ramp_fraction)
+                            : force_contact_trust(state.contact[leg], time_in_contact_s_[leg],
+                                                  config_.force_contact_ramp_s);
+  }
+}
+
+void BodyStateEstimator::start_filter(const RobotState& state) {
+  // the trunk over the origin at the kinematic height, at rest; feet where the legs put them
+  const Eigen::Vector3d position(0.0, 0.0, state.height_m);
+  const LegObservations legs = observe_legs(state);
+  std::array<Eigen::Vector3d, kNumLegs> feet;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) feet[leg] = position + legs[leg].foot_relative_world;
+  filter_.initialize(position, Eigen::Vector3d::Zero(), feet);
+  trust_.fill(0.0);
+  time_in_contact_s_.fill(0.0);
+  ground_z_m_ = 0.0;
+}
+
+LegObservations BodyStateEstimator::observe_legs(const RobotState& state) const {
+  const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
+  const Eigen::Vector3d foot_radius_down(0.0, 0.0, -robot::kFootRadius);
+  LegObservations legs;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const Vec3 q(state.q[3 * leg], state.q[3 * leg + 1], state.q[3 * leg + 2]);
+    const Vec3 qd(state.qd[3 * leg], state.qd[3 * leg + 1], state.qd[3 * leg + 2]);
+    const Vec3& foot_body = state.foot_position_body[leg];
+    // the filter's foot point is the bottom of the foot sphere: at z = 0 on the ground
+    legs[leg].foot_relative_world = body_to_world * foot_body + foot_radius_down;
+    // a still foot: 0 = v + R (J qd + omega x r)
+    const Vec3 foot_velocity_body = foot_jacobian(leg, q) * qd + state.omega_body.cross(foot_body);
+    legs[leg].body_velocity_world = -(body_to_world * foot_velocity_body);
+    legs[leg].trust = trust_[leg];
+  }
+  return legs;
+}
+
+void BodyStateEstimator::write_state(RobotState& state) {
+  state.position_world = filter_.position();
+  state.velocity_world = filter_.velocity();
+  state.velocity_body = state.orientation.conjugate() * state.velocity_world;
+  // ground under the trust-weighted stance feet; through a flight phase, the last such ground
+  double trust_sum = 0.0;
+  double weighted_foot_z = 0.0;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    trust_sum += trust_[leg];
+    weighted_foot_z += trust_[leg] * filter_.foot_position(leg).z();
+  }
+  if (trust_sum >= kMinGroundTrust) ground_z_m_ = weighted_foot_z / trust_sum;
+  state.height_m = state.position_world.z() - ground_z_m_;
+}
+
+}  // namespace cerebellum

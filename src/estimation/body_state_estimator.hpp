@@ -1,0 +1,67 @@
+// The full trunk state: orientation, acceleration and contacts from the kinematic estimator,
+// position, velocity and height from the linear Kalman filter over trunk and feet.
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "estimation/kinematic_estimator.hpp"
+#include "estimation/linear_kalman_filter.hpp"
+
+namespace cerebellum {
+
+// one leg's place in a gait, as a gait scheduler plans it
+struct LegContactPlan {
+  double probability = 0.0;   // 0..1 that the foot is on the ground now (0 in swing)
+  double stance_phase = 0.0;  // 0..1 through the current stance; ignored in swing
+};
+using ContactSchedule = std::array<LegContactPlan, kNumLegs>;
+
+struct BodyStateEstimatorConfig {
+  KinematicEstimatorConfig kinematic;
+  LinearKalmanFilterConfig filter;
+  // trust of a foot the force estimate reports in contact rises linearly over this time (s)
+  double force_contact_ramp_s = 0.02;
+  // with a schedule, trust rises over this fraction of the stance at its start and falls over it at its end
+  double schedule_ramp_fraction = 0.1;
+  // a longer gap between frames is predicted as this step (s)
+  double max_step_s = 0.02;
+};
+
+// trust of a foot from the force estimate: probability ramped in over time_in_contact_s / ramp_s
+double force_contact_trust(double contact_probability, double time_in_contact_s, double ramp_s);
+// trust of a foot from a schedule: probability ramped in and out at both ends of the stance
+double scheduled_contact_trust(const LegContactPlan& plan, double ramp_fraction);
+
+class BodyStateEstimator final : public StateEstimator {
+ public:
+  explicit BodyStateEstimator(const BodyStateEstimatorConfig& config = {});
+  void reset() override;
+  void update(const SensorFrame& frame, RobotState& state) override;
+
+  // use the planned contacts instead of the force estimate from the next update on; a schedule
+  // with non-finite numbers is refused (returns false, the previous choice stays)
+  bool set_contact_schedule(const ContactSchedule& schedule);
+  void clear_contact_schedule() { schedule_.reset(); }
+
+  const LinearKalmanFilter& filter() const { return filter_; }
+  // per leg 0..1, as handed to the filter on the last update
+  const LinearKalmanFilter::Trust& contact_trust() const { return trust_; }
+
+ private:
+  void update_trust(const RobotState& state, double dt_s);
+  void start_filter(const RobotState& state);
+  LegObservations observe_legs(const RobotState& state) const;
+  void write_state(RobotState& state);
+
+  BodyStateEstimatorConfig config_;
+  KinematicEstimator kinematic_;
+  LinearKalmanFilter filter_;
+  std::optional<ContactSchedule> schedule_;
+  LinearKalmanFilter::Trust trust_{};
+  std::array<double, kNumLegs> time_in_contact_s_{};
+  double last_time_s_ = 0.0;
+  double ground_z_m_ = 0.0;  // world z under the stance feet, kept through flight phases
+};
+
+}  // namespace cerebellum

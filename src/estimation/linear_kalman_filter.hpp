@@ -1,0 +1,87 @@
+// Linear Kalman filter for the trunk's position and velocity and the four foot points, all in the
+// world frame. The IMU's world acceleration drives the prediction; leg kinematics of the feet on
+// the ground correct it. Fixed-size matrices: nothing is allocated after construction.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+
+#include "core/joint_layout.hpp"
+
+namespace cerebellum {
+
+// noise figures, each a standard deviation (or a density for the random walks)
+struct LinearKalmanFilterConfig {
+  // white acceleration the IMU term misses: sensor noise, IMU lever arm, tilt error ((m/s^2)/sqrt(Hz))
+  double accel_noise_density = 0.5;
+  // random walk of a foot point: slip of a planted foot, free motion of a foot in the air (m/sqrt(s))
+  double stance_foot_drift = 0.002;
+  double swing_foot_drift = 1.0;
+  // a trusted foot's measurements: leg kinematics error (m), foot not quite still (m/s), ground
+  // unevenness (m)
+  double foot_relative_sigma_m = 0.005;
+  double foot_velocity_sigma_m_s = 0.05;
+  double foot_height_sigma_m = 0.005;
+  // a leg's measurement variances are divided by max(trust, min_trust): trust 0 -> x 1/min_trust
+  double min_trust = 1e-4;
+  // uncertainty right after initialize()
+  double initial_position_sigma_m = 0.02;
+  double initial_velocity_sigma_m_s = 0.1;
+  double initial_foot_sigma_m = 0.02;
+};
+
+// what one leg's kinematics say, all in world axes
+struct LegObservation {
+  Eigen::Vector3d foot_relative_world = Eigen::Vector3d::Zero();  // foot point minus trunk origin
+  Eigen::Vector3d body_velocity_world = Eigen::Vector3d::Zero();  // trunk velocity if this foot is still
+  double trust = 0.0;                                             // 0..1: how surely the foot is planted
+};
+using LegObservations = std::array<LegObservation, kNumLegs>;
+
+class LinearKalmanFilter {
+ public:
+  static constexpr int kStateSize = 6 + 3 * static_cast<int>(kNumLegs);        // p, v, feet
+  static constexpr int kMeasurementSize = 7 * static_cast<int>(kNumLegs);      // per leg: rel 3, vel 3, height 1
+  using StateVector = Eigen::Matrix<double, kStateSize, 1>;
+  using Covariance = Eigen::Matrix<double, kStateSize, kStateSize>;
+  using Trust = std::array<double, kNumLegs>;
+
+  explicit LinearKalmanFilter(const LinearKalmanFilterConfig& config = {});
+
+  // forget everything: not initialised, not valid
+  void reset();
+  // start from a known state with the configured initial uncertainty
+  void initialize(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
+                  const std::array<Eigen::Vector3d, kNumLegs>& feet);
+
+  // propagate by dt_s under the world acceleration (gravity removed); trust sets each foot's drift.
+  // Non-finite or negative input, or no initialisation: skipped, returns false, valid() false.
+  bool predict(const Eigen::Vector3d& accel_world, double dt_s, const Trust& trust);
+  // fold in the legs' kinematics; the same skipping rules as predict()
+  bool correct(const LegObservations& legs);
+
+  bool initialized() const { return initialized_; }
+  // false before initialize() and after a skipped step, until the next accepted step
+  bool valid() const { return valid_; }
+
+  Eigen::Vector3d position() const { return x_.segment<3>(0); }
+  Eigen::Vector3d velocity() const { return x_.segment<3>(3); }
+  Eigen::Vector3d foot_position(std::size_t leg) const { return x_.segment<3>(6 + 3 * leg); }
+  const StateVector& state() const { return x_; }
+  const Covariance& covariance() const { return p_; }
+  const LinearKalmanFilterConfig& config() const { return config_; }
+
+ private:
+  using MeasurementVector = Eigen::Matrix<double, kMeasurementSize, 1>;
+  using MeasurementMatrix = Eigen::Matrix<double, kMeasurementSize, kStateSize>;
+  using GainMatrix = Eigen::Matrix<double, kStateSize, kMeasurementSize>;
+
+  LinearKalmanFilterConfig config_;
+  StateVector x_ = StateVector::Zero();
+  Covariance p_ = Covariance::Zero();
+  MeasurementMatrix h_ = MeasurementMatrix::Zero();  // constant: built once
+  bool initialized_ = false;
+  bool valid_ = false;
+};
+
+}  // namespace cerebellum

@@ -1,0 +1,107 @@
+#include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace cerebellum {
+namespace {
+
+constexpr std::uint32_t kMotorModeRunning = 2u << 30;
+constexpr std::uint32_t kWindingTemperatureWarning = 1u << 24;
+constexpr std::uint32_t kWindingOverTemperature = 1u << 1;
+constexpr double kWarningTemperatureC = 82.0;
+constexpr double kShutdownTemperatureC = 87.0;
+
+std::uint64_t read_big_endian_u64(const std::uint8_t* bytes) {
+  std::uint64_t value = 0;
+  for (int i = 0; i < 8; ++i) value = (value << 8) | bytes[i];
+  return value;
+}
+
+// deg C to the wire's 0.1 deg C steps
+std::int16_t tenths_of_degree(double temperature_c) {
+  const double tenths = std::round(temperature_c * 10.0);
+  const double bounded = std::clamp(tenths, double(std::numeric_limits<std::int16_t>::min()),
+                                    double(std::numeric_limits<std::int16_t>::max()));
+  return std::isfinite(bounded) ? static_cast<std::int16_t>(bounded) : std::int16_t{0};
+}
+
+}  // namespace
+
+MotorCtrlDecode decode_motor_ctrl(const void* data, std::size_t size, JointCommand& sdk_command) {
+  static const int kEncodedSize = motor_ctrl_lcmt{}.getEncodedSize();
+  if (size < 8) return MotorCtrlDecode::Truncated;
+  const auto* bytes = static_cast<const std::uint8_t*>(data);
+  if (read_big_endian_u64(bytes) != static_cast<std::uint64_t>(motor_ctrl_lcmt::getHash())) {
+    return MotorCtrlDecode::WrongFingerprint;
+  }
+  if (size < static_cast<std::size_t>(kEncodedSize)) return MotorCtrlDecode::Truncated;
+  if (size > static_cast<std::size_t>(kEncodedSize)) return MotorCtrlDecode::Oversized;
+  motor_ctrl_lcmt message;
+  if (message.decode(data, 0, kEncodedSize) != kEncodedSize) return MotorCtrlDecode::Truncated;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    const double sign = wire_sign(i % kJointsPerLeg);
+    sdk_command.q_des[i] = sign * message.q_des[i];
+    sdk_command.qd_des[i] = sign * message.qd_des[i];
+    sdk_command.kp[i] = message.kp_des[i];
+    sdk_command.kd[i] = message.kd_des[i];
+    sdk_command.tau_ff[i] = sign * message.tau_des[i];
+  }
+  return MotorCtrlDecode::Ok;
+}
+
+motor_ctrl_lcmt encode_motor_ctrl(const JointCommand& sdk_command) {
+  motor_ctrl_lcmt message;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    const double sign = wire_sign(i % kJointsPerLeg);
+    message.q_des[i] = static_cast<float>(sign * sdk_command.q_des[i]);
+    message.qd_des[i] = static_cast<float>(sign * sdk_command.qd_des[i]);
+    message.kp_des[i] = static_cast<float>(sdk_command.kp[i]);
+    message.kd_des[i] = static_cast<float>(sdk_command.kd[i]);
+    message.tau_des[i] = static_cast<float>(sign * sdk_command.tau_ff[i]);
+  }
+  return message;
+}
+
+std::uint32_t motor_flags(double temperature_c) {
+  std::uint32_t flags = kMotorModeRunning;
+  if (temperature_c >= kWarningTemperatureC) flags |= kWindingTemperatureWarning;
+  if (temperature_c >= kShutdownTemperatureC) flags |= kWindingOverTemperature;
+  return flags;
+}
+
+spi_data_t make_spi_data(const RobotState& state) {
+  spi_data_t message{};
+  const JointArray<double> q = sdk_to_wire(state.q);
+  const JointArray<double> qd = sdk_to_wire(state.qd);
+  const JointArray<double> tau = sdk_to_wire(state.tau);
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const std::size_t abad = joint_index(leg, 0), hip = joint_index(leg, 1), knee = joint_index(leg, 2);
+    message.q_abad[leg] = static_cast<float>(q[abad]);
+    message.q_hip[leg] = static_cast<float>(q[hip]);
+    message.q_knee[leg] = static_cast<float>(q[knee]);
+    message.qd_abad[leg] = static_cast<float>(qd[abad]);
+    message.qd_hip[leg] = static_cast<float>(qd[hip]);
+    message.qd_knee[leg] = static_cast<float>(qd[knee]);
+    message.tau_abad[leg] = static_cast<float>(tau[abad]);
+    message.tau_hip[leg] = static_cast<float>(tau[hip]);
+    message.tau_knee[leg] = static_cast<float>(tau[knee]);
+    message.tmp_abad[leg] = tenths_of_degree(state.temperature_c[abad]);
+    message.tmp_hip[leg] = tenths_of_degree(state.temperature_c[hip]);
+    message.tmp_knee[leg] = tenths_of_degree(state.temperature_c[knee]);
+  }
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    message.flags[i] = static_cast<std::int32_t>(motor_flags(state.temperature_c[i]));
+  }
+  return message;
+}
+
+motor_ctrl_state_lcmt make_motor_ctrl_state(const MotorSdkStatus& status) {
+  motor_ctrl_state_lcmt message{};
+  message.err_flag = static_cast<std::int16_t>(status.err_flag);
+  message.ctrl_topic_interval = static_cast<float>(status.ctrl_topic_interval_ms);
+  return message;
+}
+
+}  // namespace cerebellum

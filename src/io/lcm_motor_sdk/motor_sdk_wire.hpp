@@ -1,0 +1,38 @@
+// Wire side of the motor SDK channels: motor_ctrl in, spi_data and motor_ctrl_state out.
+// Joint values on the wire use the MC's internal convention (hip and knee negated).
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+
+#include "core/robot_state.hpp"
+#include "core/types.hpp"
+#include "modes/motor_sdk/motor_sdk_source.hpp"
+#include "motor_ctrl_lcmt.hpp"
+#include "motor_ctrl_state_lcmt.hpp"
+#include "spi_data_t.hpp"
+
+namespace cerebellum {
+
+enum class MotorCtrlDecode {
+  Ok,
+  WrongFingerprint,  // the first 8 bytes are not motor_ctrl_lcmt's hash
+  Truncated,         // shorter than 248 bytes
+  Oversized,         // longer than 248 bytes
+};
+
+// decodes one raw motor_ctrl packet into an SDK-convention command (kp, kd unchanged;
+// q_des, qd_des, tau_des flipped); NaN/Inf pass through, the mailbox rejects them
+MotorCtrlDecode decode_motor_ctrl(const void* data, std::size_t size, JointCommand& sdk_command);
+
+// the wire message of an SDK-convention command (what a client sends)
+motor_ctrl_lcmt encode_motor_ctrl(const JointCommand& sdk_command);
+
+// motor_error / spi flags of one motor: 0x80000000 (motor mode, healthy) plus the winding
+// temperature warning (bit 24, >= 82 deg C) and over-temperature error (bit 1, >= 87 deg C)
+std::uint32_t motor_flags(double temperature_c);
+
+spi_data_t make_spi_data(const RobotState& state);
+motor_ctrl_state_lcmt make_motor_ctrl_state(const MotorSdkStatus& status);
+
+}  // namespace cerebellum

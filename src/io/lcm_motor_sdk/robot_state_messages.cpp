@@ -1,0 +1,72 @@
+#include "io/lcm_motor_sdk/robot_state_messages.hpp"
+
+#include <Eigen/LU>
+#include <cmath>
+
+#include "core/leg_kinematics.hpp"
+
+namespace cerebellum {
+namespace {
+
+constexpr double kSingularDeterminant = 1e-9;
+
+void put(float* out, const Eigen::Vector3d& v) {
+  for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(v[i]);
+}
+
+Vec3 leg_slice(const JointArray<double>& values, std::size_t leg) {
+  return {values[joint_index(leg, 0)], values[joint_index(leg, 1)], values[joint_index(leg, 2)]};
+}
+
+// the foot force that joint torques tau balance: tau = J^T f
+Vec3 foot_force(const Mat3& jacobian, const Vec3& tau) {
+  if (std::abs(jacobian.determinant()) <= kSingularDeterminant) return Vec3::Zero();
+  return jacobian.transpose().partialPivLu().solve(tau);
+}
+
+}  // namespace
+
+state_estimator_lcmt make_state_estimator(const RobotState& state) {
+  state_estimator_lcmt message{};
+  put(message.p, state.position_world);
+  put(message.vWorld, state.velocity_world);
+  put(message.vBody, state.velocity_body);
+  put(message.p_abs, state.position_world);
+  put(message.vWorld_abs, state.velocity_world);
+  put(message.vBody_abs, state.velocity_body);
+  put(message.rpy, state.rpy);
+  put(message.omegaBody, state.omega_body);
+  put(message.omegaWorld, state.omega_world);
+  message.quat[0] = static_cast<float>(state.orientation.w());
+  message.quat[1] = static_cast<float>(state.orientation.x());
+  message.quat[2] = static_cast<float>(state.orientation.y());
+  message.quat[3] = static_cast<float>(state.orientation.z());
+  put(message.aBody, state.accel_body);
+  put(message.aWorld, state.accel_world);
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) message.contactEstimate[leg] = static_cast<float>(state.contact[leg]);
+  message.timestamp = static_cast<std::int64_t>(std::llround(state.time_s * 1e9));
+  return message;
+}
+
+leg_control_data_lcmt make_leg_control_data(const RobotState& state, const JointCommand& command) {
+  leg_control_data_lcmt message{};
+  const JointArray<double> q = sdk_to_wire(state.q);
+  const JointArray<double> qd = sdk_to_wire(state.qd);
+  const JointArray<double> tau = sdk_to_wire(state.tau);
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    message.q[i] = static_cast<float>(q[i]);
+    message.qd[i] = static_cast<float>(qd[i]);
+    message.tau_est[i] = static_cast<float>(tau[i]);
+  }
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const Vec3 q_leg = leg_slice(state.q, leg);
+    const Mat3 jacobian = foot_jacobian(leg, q_leg);
+    put(&message.p[3 * leg], foot_position_in_hip(leg, q_leg));
+    put(&message.v[3 * leg], jacobian * leg_slice(state.qd, leg));
+    put(&message.force_est[3 * leg], foot_force(jacobian, leg_slice(state.tau, leg)));
+    put(&message.force_desired[3 * leg], foot_force(jacobian, leg_slice(command.tau_ff, leg)));
+  }
+  return message;
+}
+
+}  // namespace cerebellum

@@ -1,0 +1,51 @@
+// What the shared-memory source has to say (rejected frames, take-over, refusal, timeouts),
+// printed by its own thread: the loop thread only copies an event into a ring.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <cstdio>
+#include <thread>
+
+#include "core/spsc_ring.hpp"
+#include "io/shm_lowlevel/shm_codec.hpp"
+
+namespace cerebellum {
+
+enum class ShmEventKind { FrameRejected, Latched, Refused, CommandTimedOut, CommandResumed };
+
+struct ShmEvent {
+  ShmEventKind kind = ShmEventKind::FrameRejected;
+  double time_s = 0.0;          // robot time
+  ShmCommandCheck check;        // FrameRejected
+  const char* holder = nullptr; // Refused: who has the robot (a string literal of the arbiter or a source)
+  int missed_cycles = 0;        // CommandTimedOut
+  double damping_kd = 0.0;      // CommandTimedOut
+};
+
+class ShmEventLog {
+ public:
+  explicit ShmEventLog(std::FILE* out);
+  ~ShmEventLog();
+  ShmEventLog(const ShmEventLog&) = delete;
+  ShmEventLog& operator=(const ShmEventLog&) = delete;
+
+  // loop thread: never blocks; an event that does not fit is dropped and counted
+  void post(const ShmEvent& event) { ring_.try_push(event); }
+  // print what is queued now and wait until it is written (any thread but the loop's)
+  void flush();
+
+ private:
+  void drain();
+  void print(const ShmEvent& event);
+
+  std::FILE* out_;
+  SpscRing<ShmEvent, 64> ring_;
+  std::size_t dropped_reported_ = 0;
+  std::atomic<bool> running_{true};
+  std::atomic<std::uint64_t> flush_requests_{0};
+  std::atomic<std::uint64_t> flushes_done_{0};
+  std::thread printer_;
+};
+
+}  // namespace cerebellum

@@ -1,0 +1,93 @@
+#include "modes/command_queue.hpp"
+
+#include <cmath>
+
+namespace cerebellum {
+namespace {
+
+template <typename Array>
+bool finite(const Array& values) {
+  for (float v : values) {
+    if (!std::isfinite(v)) return false;
+  }
+  return true;
+}
+
+bool command_is_finite(const HighLevelCommand& c) {
+  return finite(c.vel_des) && finite(c.rpy_des) && finite(c.pos_des) && finite(c.acc_des) && finite(c.ctrl_point) &&
+         finite(c.foot_pose) && finite(c.step_height);
+}
+
+constexpr int kMotionMode = static_cast<int>(ModeId::Motion);
+
+}  // namespace
+
+HighLevelCommand hold_command_after(const HighLevelCommand& last) {
+  HighLevelCommand hold = last;
+  hold.duration = 0;
+  hold.vel_des = {};
+  if (last.mode == static_cast<int>(ModeId::QpStand)) {
+    hold.gait_id = 1;
+  } else if (last.mode == static_cast<int>(ModeId::Locomotion)) {
+    hold.gait_id = last.gait_id <= 30 ? 1 : 31;
+  } else {
+    hold.mode = static_cast<int>(ModeId::PoseControl);
+    hold.gait_id = 3;
+  }
+  return hold;
+}
+
+CommandQueue::CommandQueue(double tick_period_s) : tick_period_s_(tick_period_s) { entries_.reserve(kCapacity + 1); }
+
+CommandQueue::Receipt CommandQueue::receive(const HighLevelCommand& command, double time_s) {
+  client_seen_ = true;
+  last_receive_s_ = time_s;
+  if (command.life_count == last_life_count_) return Receipt::Heartbeat;
+  if (!command_is_finite(command)) return Receipt::Rejected;
+  last_life_count_ = command.life_count;
+  if (command.mode == -1) return Receipt::Ignored;
+
+  const long duration_ticks = std::lround(std::floor(std::max(0, command.duration) * 1e-3 / tick_period_s_ + 1e-9));
+  if (command.duration <= 0 && command.mode != kMotionMode) {
+    entries_.clear();
+    entries_.push_back({command, -1});
+    start_front();
+    return Receipt::RunsNow;
+  }
+  // a timed entry: endless entries waiting in front of it are dropped
+  const bool front_was_endless = !entries_.empty() && entries_.front().ticks_left < 0;
+  std::erase_if(entries_, [](const Entry& e) { return e.ticks_left < 0; });
+  if (entries_.size() >= kCapacity) return Receipt::QueueFull;
+  entries_.push_back({command, duration_ticks});
+  if (entries_.size() == 1 || front_was_endless) start_front();
+  return Receipt::Queued;
+}
+
+void CommandQueue::tick(bool switching) {
+  if (entries_.empty() || switching) return;
+  Entry& front = entries_.front();
+  if (front.ticks_left < 0) return;
+  if (--front.ticks_left > 0) return;
+  const HighLevelCommand finished = front.command;
+  entries_.erase(entries_.begin());
+  if (entries_.empty()) entries_.push_back({hold_command_after(finished), -1});
+  start_front();
+}
+
+bool CommandQueue::timed_out(double time_s) const {
+  return client_seen_ && time_s - last_receive_s_ > kHeartbeatTimeoutS;
+}
+
+void CommandQueue::clear() {
+  entries_.clear();
+  client_seen_ = false;
+  ++generation_;
+}
+
+const HighLevelCommand* CommandQueue::current() const {
+  return entries_.empty() ? nullptr : &entries_.front().command;
+}
+
+void CommandQueue::start_front() { ++generation_; }
+
+}  // namespace cerebellum

@@ -1,0 +1,60 @@
+// The high-level command semantics of the CyberDog2 MC: heartbeat timeout, life_count, the
+// duration queue in control ticks, and the hold command when a timed sequence ends.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "modes/high_level_command.hpp"
+
+namespace cerebellum {
+
+class CommandQueue {
+ public:
+  static constexpr double kHeartbeatTimeoutS = 0.5;
+  static constexpr std::size_t kCapacity = 64;
+
+  enum class Receipt {
+    Heartbeat,   // same life_count: refreshes the timer only
+    RunsNow,     // duration 0: replaced the queue
+    Queued,      // duration > 0: appended
+    Ignored,     // mode -1
+    Rejected,    // NaN/Inf in a field: refreshes the timer, changes nothing else
+    QueueFull,   // more than kCapacity timed entries waiting
+  };
+
+  explicit CommandQueue(double tick_period_s);
+
+  Receipt receive(const HighLevelCommand& command, double time_s);
+  // one control tick has passed; while `switching` the running entry's time does not count
+  void tick(bool switching);
+  // a client has spoken and then been silent for 0.5 s
+  bool timed_out(double time_s) const;
+  // forget every entry and the client (after a timeout or a mode forced by the MC)
+  void clear();
+
+  // the entry that should run now, or nullptr
+  const HighLevelCommand* current() const;
+  // changes whenever current() changes to another entry
+  std::uint64_t generation() const { return generation_; }
+  std::size_t size() const { return entries_.size(); }
+
+ private:
+  struct Entry {
+    HighLevelCommand command;
+    long ticks_left;  // < 0: runs until replaced
+  };
+  void start_front();
+
+  double tick_period_s_;
+  std::vector<Entry> entries_;
+  int last_life_count_ = -1;
+  bool client_seen_ = false;
+  double last_receive_s_ = 0.0;
+  std::uint64_t generation_ = 0;
+};
+
+// the command that holds the robot after a timed entry of `last` ran out
+HighLevelCommand hold_command_after(const HighLevelCommand& last);
+
+}  // namespace cerebellum

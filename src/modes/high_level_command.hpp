@@ -1,0 +1,73 @@
+// The high-level interface's command and status, as the MC sees them (mirrors robot_control_cmd
+// and robot_control_response of the CyberDog2 LCM interface, without the transport).
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+namespace cerebellum {
+
+// mode ids of the CyberDog2 high-level interface
+enum class ModeId : int {
+  Off = 0,
+  QpStand = 3,
+  PureDamper = 7,
+  Lifted = 9,
+  Locomotion = 11,
+  RecoveryStand = 12,
+  LowLevelMotor = 15,
+  Jump3d = 16,
+  PoseControl = 21,
+  ForceJump = 22,
+  Motion = 62,
+  TwoLegStand = 64,
+};
+
+enum class SwitchStatus : int {
+  Done = 0,
+  Transitioning = 1,
+  EmergencyStop = 2,
+  HighDamping = 3,
+  Lifted = 4,
+  BanTransition = 5,
+  OverHeat = 6,
+  LowBattery = 7,
+};
+
+struct HighLevelCommand {
+  int mode = 0;
+  int gait_id = 0;
+  int contact = 0;
+  int life_count = 0;
+  std::array<float, 3> vel_des{};
+  std::array<float, 3> rpy_des{};
+  std::array<float, 3> pos_des{};
+  std::array<float, 6> acc_des{};
+  std::array<float, 3> ctrl_point{};
+  std::array<float, 6> foot_pose{};
+  std::array<float, 2> step_height{};
+  std::int32_t value = 0;
+  std::int32_t duration = 0;  // ms
+};
+
+// a command with the robot time it arrived at
+struct TimedCommand {
+  HighLevelCommand command;
+  double received_s = 0.0;
+};
+
+struct HighLevelStatus {
+  int mode = 0;
+  int gait_id = 0;
+  int contact = 0;            // bit i: leg i's foot force > 5 N
+  int order_process_bar = 0;  // percent
+  SwitchStatus switch_status = SwitchStatus::Done;
+  int ori_error = 0;
+  int footpos_error = 0;      // bit 3 * leg + axis
+  std::array<std::uint32_t, 12> motor_error{};
+};
+
+// a healthy running motor: mode bits 30..31 = 2 (motor mode), no error bits
+inline constexpr std::uint32_t kMotorHealthy = 0x80000000u;
+
+}  // namespace cerebellum

@@ -1,0 +1,120 @@
+#include "modes/high_level_machine.hpp"
+
+#include "modes/transition_table.hpp"
+
+namespace cerebellum {
+
+HighLevelMachine::HighLevelMachine(double tick_period_s, const HighLevelCommand& startup)
+    : queue_(tick_period_s), startup_(startup) {}
+
+void HighLevelMachine::add_mode(Mode& mode) { modes_[static_cast<std::size_t>(mode.id())] = &mode; }
+
+bool HighLevelMachine::submit(const HighLevelCommand& command, double received_s) {
+  if (inbox_.try_push({command, received_s})) return true;
+  counters_.ring_overflow.fetch_add(1, std::memory_order_relaxed);
+  return false;
+}
+
+Mode* HighLevelMachine::mode_for(int mode) const {
+  if (mode < 0 || mode >= static_cast<int>(modes_.size())) return nullptr;
+  return modes_[static_cast<std::size_t>(mode)];
+}
+
+bool HighLevelMachine::allows_low_level_latch() const {
+  return current_ != nullptr && (current_->id() == ModeId::Off || current_->id() == ModeId::PureDamper);
+}
+
+void HighLevelMachine::on_handover() { handed_over_ = true; }
+
+void HighLevelMachine::refuse(const HighLevelCommand& command, const char* reason) {
+  banned_ = true;
+  counters_.banned_transitions.fetch_add(1, std::memory_order_relaxed);
+  refusals_.try_push({command.mode, command.gait_id, current_ != nullptr ? static_cast<int>(current_->id()) : -1,
+                      reason});
+}
+
+void HighLevelMachine::switch_to(Mode& mode, const RobotState& state, const HighLevelCommand& command) {
+  current_ = &mode;
+  banned_ = false;
+  mode.enter(state, command);
+}
+
+void HighLevelMachine::apply(const RobotState& state, const HighLevelCommand& command) {
+  Mode* target = mode_for(command.mode);
+  if (target == nullptr) {
+    refuse(command, is_known_mode(command.mode) ? "mode not available in this MC" : "unknown mode");
+    return;
+  }
+  if (const char* reason = target->check(command)) {
+    refuse(command, reason);
+    return;
+  }
+  if (target == current_) {
+    banned_ = false;
+    current_->update(state, command);
+    return;
+  }
+  if (!transition_allowed(current_->id(), target->id())) {
+    refuse(command, "transition not allowed from the current mode");
+    return;
+  }
+  switch_to(*target, state, command);
+}
+
+void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
+  if (!started_) {
+    started_ = true;
+    Mode* startup = mode_for(startup_.mode);
+    if (startup == nullptr) startup = mode_for(static_cast<int>(ModeId::Off));
+    switch_to(*startup, state, startup_);
+  }
+  // client input of this tick
+  while (const auto input = inbox_.try_pop()) {
+    counters_.received.fetch_add(1, std::memory_order_relaxed);
+    switch (queue_.receive(input->command, input->received_s)) {
+      case CommandQueue::Receipt::RunsNow:
+      case CommandQueue::Receipt::Queued: counters_.new_commands.fetch_add(1, std::memory_order_relaxed); break;
+      case CommandQueue::Receipt::Rejected:
+        counters_.rejected_non_finite.fetch_add(1, std::memory_order_relaxed);
+        break;
+      case CommandQueue::Receipt::QueueFull: counters_.queue_full.fetch_add(1, std::memory_order_relaxed); break;
+      case CommandQueue::Receipt::Heartbeat:
+      case CommandQueue::Receipt::Ignored: break;
+    }
+  }
+  // a client that went silent: get-down protection
+  if (queue_.timed_out(state.time_s)) {
+    counters_.timeouts.fetch_add(1, std::memory_order_relaxed);
+    queue_.clear();
+    applied_generation_ = queue_.generation();
+    Mode* damper = mode_for(static_cast<int>(ModeId::PureDamper));
+    if (current_->id() != ModeId::Off && damper != nullptr) {
+      HighLevelCommand damp;
+      damp.mode = static_cast<int>(ModeId::PureDamper);
+      switch_to(*damper, state, damp);
+    }
+  }
+  if (queue_.generation() != applied_generation_) {
+    applied_generation_ = queue_.generation();
+    if (const HighLevelCommand* next = queue_.current()) apply(state, *next);
+  }
+  queue_.tick(current_->progress_percent() < 100);
+  current_->run(state, command);
+  update_status(state);
+}
+
+void HighLevelMachine::update_status(const RobotState& state) {
+  status_.mode = handed_over_ ? static_cast<int>(ModeId::LowLevelMotor) : static_cast<int>(current_->id());
+  status_.gait_id = current_->gait_id();
+  status_.contact = 0;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    if (state.contact[leg] > 0.5) status_.contact |= 1 << leg;
+  }
+  status_.order_process_bar = current_->progress_percent();
+  status_.switch_status = banned_                             ? SwitchStatus::BanTransition
+                          : status_.order_process_bar < 100 ? SwitchStatus::Transitioning
+                                                            : SwitchStatus::Done;
+  status_.motor_error.fill(kMotorHealthy);
+}
+
+}  // namespace cerebellum

@@ -1,0 +1,79 @@
+// The high-level state machine: client commands in (through CommandQueue), the running mode's
+// joint command out, and the status the response channel reports. It is the MC's own behaviour
+// in the SourceArbiter; a low-level source may take over only from Off or PureDamper.
+#pragma once
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+
+#include "modes/source_arbiter.hpp"
+#include "core/spsc_ring.hpp"
+#include "modes/command_queue.hpp"
+#include "modes/mode.hpp"
+
+namespace cerebellum {
+
+// counters of what happened to client input (read from any thread)
+struct CommandCounters {
+  std::atomic<std::uint64_t> received{0};
+  std::atomic<std::uint64_t> new_commands{0};
+  std::atomic<std::uint64_t> rejected_non_finite{0};
+  std::atomic<std::uint64_t> queue_full{0};
+  std::atomic<std::uint64_t> ring_overflow{0};
+  std::atomic<std::uint64_t> banned_transitions{0};
+  std::atomic<std::uint64_t> timeouts{0};
+};
+
+// why the last command was refused, for a publisher thread to log (written in the loop thread)
+struct RefusalNote {
+  int mode = 0;
+  int gait_id = 0;
+  int from_mode = 0;
+  const char* reason = "";  // a static string
+};
+
+class HighLevelMachine final : public OwnBehaviour {
+ public:
+  // startup: the command the MC runs by itself at start (no client, no timeout)
+  HighLevelMachine(double tick_period_s, const HighLevelCommand& startup);
+
+  // register a mode before the loop starts; the machine starts in the startup command's mode
+  void add_mode(Mode& mode);
+
+  // client thread: hand over one received command (lock-free); false when the ring is full
+  bool submit(const HighLevelCommand& command, double received_s);
+
+  // loop thread
+  void compute(const RobotState& state, JointCommand& command) override;
+  bool allows_low_level_latch() const override;
+  void on_handover() override;
+
+  // loop thread (or a CycleObserver in it): the response fields as of the last tick
+  const HighLevelStatus& status() const { return status_; }
+  const CommandCounters& counters() const { return counters_; }
+  // refusals not yet taken by a logger (loop thread pushes, one consumer thread pops)
+  SpscRing<RefusalNote, 16>& refusals() { return refusals_; }
+
+ private:
+  Mode* mode_for(int mode) const;
+  void apply(const RobotState& state, const HighLevelCommand& command);
+  void switch_to(Mode& mode, const RobotState& state, const HighLevelCommand& command);
+  void refuse(const HighLevelCommand& command, const char* reason);
+  void update_status(const RobotState& state);
+
+  CommandQueue queue_;
+  SpscRing<TimedCommand, 64> inbox_;
+  std::array<Mode*, 65> modes_{};
+  Mode* current_ = nullptr;
+  HighLevelCommand startup_;
+  bool started_ = false;
+  bool handed_over_ = false;
+  std::uint64_t applied_generation_ = 0;
+  HighLevelStatus status_;
+  bool banned_ = false;  // the last command was refused: BAN_TRANS until the next accepted one
+  CommandCounters counters_;
+  SpscRing<RefusalNote, 16> refusals_;
+};
+
+}  // namespace cerebellum

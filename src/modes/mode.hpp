@@ -1,0 +1,27 @@
+// One behaviour of the high-level state machine (a row of the mode table).
+#pragma once
+
+#include "core/robot_state.hpp"
+#include "core/types.hpp"
+#include "modes/high_level_command.hpp"
+
+namespace cerebellum {
+
+class Mode {
+ public:
+  virtual ~Mode() = default;
+  virtual ModeId id() const = 0;
+  // nullptr when the command's gait and values suit this mode, else why it is refused
+  virtual const char* check(const HighLevelCommand& command) const = 0;
+  // the mode takes over the robot
+  virtual void enter(const RobotState& state, const HighLevelCommand& command) = 0;
+  // a new command while this mode runs (same mode id, maybe another gait or target)
+  virtual void update(const RobotState& state, const HighLevelCommand& command) = 0;
+  // one control tick; must not block, allocate or print
+  virtual void run(const RobotState& state, JointCommand& command) = 0;
+  virtual int gait_id() const = 0;
+  // order_process_bar: percent of the mode's transition done; 100 once it holds its target
+  virtual int progress_percent() const = 0;
+};
+
+}  // namespace cerebellum

@@ -1,0 +1,84 @@
+#include "modes/motor_sdk/motor_sdk_frame_rules.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/robot_model.hpp"
+
+namespace cerebellum {
+namespace {
+
+// clamp into [lower, upper]; true when the value had to move
+bool clamp_into(double& value, double lower, double upper) {
+  const double clamped = std::clamp(value, lower, upper);
+  const bool moved = clamped != value;
+  value = clamped;
+  return moved;
+}
+
+template <typename Array>
+bool all_finite(const Array& values) {
+  return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
+}
+
+}  // namespace
+
+bool command_is_finite(const JointCommand& command) {
+  return all_finite(command.q_des) && all_finite(command.qd_des) && all_finite(command.kp) &&
+         all_finite(command.kd) && all_finite(command.tau_ff);
+}
+
+RangeClampCount clamp_to_ranges(JointCommand& frame, const MotorSdkParameters& parameters) {
+  RangeClampCount count;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    const bool kp_moved = clamp_into(frame.kp[i], 0.0, parameters.kp_max);
+    const bool kd_moved = clamp_into(frame.kd[i], 0.0, parameters.kd_max);
+    count.gains += (kp_moved || kd_moved) ? 1 : 0;
+    count.velocities += clamp_into(frame.qd_des[i], -parameters.qd_des_max_rad_s, parameters.qd_des_max_rad_s);
+    count.torques += clamp_into(frame.tau_ff[i], -parameters.tau_des_max_nm, parameters.tau_des_max_nm);
+    if (frame.kp[i] > parameters.zero_tolerance) {
+      const robot::JointRange range = robot::joint_range(i);
+      count.positions += clamp_into(frame.q_des[i], range.lower + parameters.joint_limit_margin_rad,
+                                    range.upper - parameters.joint_limit_margin_rad);
+    }
+  }
+  return count;
+}
+
+JumpClampResult clamp_position_jumps(JointCommand& frame, const JointArray<double>& reference_q,
+                                     const MotorSdkParameters& parameters) {
+  static constexpr std::uint16_t kJumpBit[kJointsPerLeg] = {kMotorSdkAbadJump, kMotorSdkHipJump, kMotorSdkKneeJump};
+  JumpClampResult result;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    if (frame.kp[i] <= parameters.zero_tolerance) continue;
+    const std::size_t joint = i % kJointsPerLeg;
+    const double max_step = parameters.max_position_step_rad[joint];
+    if (clamp_into(frame.q_des[i], reference_q[i] - max_step, reference_q[i] + max_step)) {
+      result.err_bits |= kJumpBit[joint];
+      ++result.joints;
+    }
+  }
+  return result;
+}
+
+bool is_all_zero_frame(const JointCommand& frame, double tolerance) {
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    if (std::abs(frame.kp[i]) > tolerance || std::abs(frame.kd[i]) > tolerance ||
+        std::abs(frame.tau_ff[i]) > tolerance) {
+      return false;
+    }
+  }
+  return true;
+}
+
+void decay_late_command(JointCommand& command, const JointArray<double>& q_measured, double gap_s,
+                        const MotorSdkParameters& parameters) {
+  const double factor = parameters.late_after_s / gap_s;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    command.qd_des[i] *= factor;
+    command.tau_ff[i] *= factor;
+    command.q_des[i] = q_measured[i] + factor * (command.q_des[i] - q_measured[i]);
+  }
+}
+
+}  // namespace cerebellum

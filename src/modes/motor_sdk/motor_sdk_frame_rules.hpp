@@ -1,0 +1,44 @@
+// Pure functions that turn one received motor SDK frame (SDK joint convention) into what the
+// motors may execute: range clamps, position jump clamps, the late-frame decay.
+#pragma once
+
+#include <cstdint>
+
+#include "core/types.hpp"
+#include "modes/motor_sdk/motor_sdk_parameters.hpp"
+
+namespace cerebellum {
+
+// how many joints had each quantity clamped in one frame
+struct RangeClampCount {
+  std::uint32_t gains = 0;       // kp or kd
+  std::uint32_t velocities = 0;  // qd_des
+  std::uint32_t torques = 0;     // tau_des
+  std::uint32_t positions = 0;   // q_des outside the joint limits (only where kp acts)
+};
+
+struct JumpClampResult {
+  std::uint16_t err_bits = 0;  // kMotorSdkAbadJump / HipJump / KneeJump
+  std::uint32_t joints = 0;    // joints whose step was clamped
+};
+
+bool command_is_finite(const JointCommand& command);
+
+// kp 0..kp_max, kd 0..kd_max, qd_des and tau_des symmetric; q_des kept joint_limit_margin_rad
+// inside the joint range where kp > zero_tolerance (elsewhere the position does not act)
+RangeClampCount clamp_to_ranges(JointCommand& frame, const MotorSdkParameters& parameters);
+
+// limits each acting joint's q_des to reference +- max_position_step_rad of its joint type
+JumpClampResult clamp_position_jumps(JointCommand& frame, const JointArray<double>& reference_q,
+                                     const MotorSdkParameters& parameters);
+
+// the activation frame: |kp|, |kd| and |tau_des| at or below tolerance on every joint
+bool is_all_zero_frame(const JointCommand& frame, double tolerance);
+
+// a frame gap_s old (gap_s > late_after_s): qd_des and tau_des scaled by late_after_s / gap_s and
+// the position error to the measured angle scaled the same way, so the target decays towards
+// where the joint is instead of holding a stale stiff target
+void decay_late_command(JointCommand& command, const JointArray<double>& q_measured, double gap_s,
+                        const MotorSdkParameters& parameters);
+
+}  // namespace cerebellum

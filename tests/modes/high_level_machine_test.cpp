@@ -1,0 +1,185 @@
+// The state machine with scripted modes: switching, refusals, timeouts, status.
+#include "modes/high_level_machine.hpp"
+
+#include <gtest/gtest.h>
+
+namespace cerebellum {
+namespace {
+
+class ScriptedMode final : public Mode {
+ public:
+  ScriptedMode(ModeId id, int max_gait = 0) : id_(id), max_gait_(max_gait) {}
+  ModeId id() const override { return id_; }
+  const char* check(const HighLevelCommand& c) const override {
+    return c.gait_id >= 0 && c.gait_id <= max_gait_ ? nullptr : "bad gait";
+  }
+  void enter(const RobotState&, const HighLevelCommand& c) override { gait_ = c.gait_id, ++entered; }
+  void update(const RobotState&, const HighLevelCommand& c) override { gait_ = c.gait_id, ++updated; }
+  void run(const RobotState&, JointCommand& command) override {
+    command = JointCommand{};
+    command.kp.fill(static_cast<double>(id_));
+  }
+  int gait_id() const override { return gait_; }
+  int progress_percent() const override { return progress; }
+
+  int progress = 100;
+  int entered = 0;
+  int updated = 0;
+
+ private:
+  ModeId id_;
+  int max_gait_;
+  int gait_ = 0;
+};
+
+HighLevelCommand cmd(ModeId mode, int gait, int life_count, int duration_ms = 0) {
+  HighLevelCommand c;
+  c.mode = static_cast<int>(mode);
+  c.gait_id = gait;
+  c.life_count = life_count;
+  c.duration = duration_ms;
+  return c;
+}
+
+struct Machine {
+  explicit Machine(ModeId startup = ModeId::Off) : machine(0.002, cmd(startup, 0, 0)) {
+    for (ScriptedMode* m : {&off, &damper, &recovery, &pose, &loco}) machine.add_mode(*m);
+    state.valid = true;
+  }
+  // one tick at time t
+  JointCommand tick() {
+    JointCommand command;
+    machine.compute(state, command);
+    state.time_s += 0.002;
+    return command;
+  }
+  ScriptedMode off{ModeId::Off}, damper{ModeId::PureDamper, 1}, recovery{ModeId::RecoveryStand},
+      pose{ModeId::PoseControl, 5}, loco{ModeId::Locomotion, 31};
+  HighLevelMachine machine;
+  RobotState state;
+};
+
+TEST(HighLevelMachine, StartsInTheStartupModeAndRunsIt) {
+  Machine m(ModeId::RecoveryStand);
+  const JointCommand command = m.tick();
+  EXPECT_EQ(command.kp[0], 12.0);
+  EXPECT_EQ(m.machine.status().mode, 12);
+  EXPECT_EQ(m.recovery.entered, 1);
+}
+
+TEST(HighLevelMachine, LegalSwitchRunsTheNewModeAndReportsIt) {
+  Machine m;
+  m.tick();
+  m.machine.submit(cmd(ModeId::RecoveryStand, 0, 1), m.state.time_s);
+  m.recovery.progress = 40;
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, 12);
+  EXPECT_EQ(m.machine.status().order_process_bar, 40);
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::Transitioning);
+  m.recovery.progress = 100;
+  m.tick();
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::Done);
+}
+
+TEST(HighLevelMachine, IllegalSwitchIsBannedAndKeepsTheOldMode) {
+  Machine m;
+  m.tick();
+  m.machine.submit(cmd(ModeId::Locomotion, 27, 1), m.state.time_s);  // 0 -> 11 is not in the table
+  const JointCommand command = m.tick();
+  EXPECT_EQ(command.kp[0], 0.0);
+  EXPECT_EQ(m.machine.status().mode, 0);
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::BanTransition);
+  EXPECT_EQ(m.loco.entered, 0);
+  EXPECT_EQ(m.machine.counters().banned_transitions.load(), 1u);
+  const auto note = m.machine.refusals().try_pop();
+  ASSERT_TRUE(note.has_value());
+  EXPECT_EQ(note->mode, 11);
+  EXPECT_EQ(note->from_mode, 0);
+  // the next accepted command clears the ban
+  m.machine.submit(cmd(ModeId::RecoveryStand, 0, 2), m.state.time_s);
+  m.tick();
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::Done);
+}
+
+TEST(HighLevelMachine, UnknownModeUnavailableModeAndBadGaitAreBanned) {
+  for (const HighLevelCommand& c : {cmd(static_cast<ModeId>(99), 0, 1), cmd(ModeId::Jump3d, 0, 1),
+                                    cmd(ModeId::PureDamper, 4, 1)}) {
+    Machine m;
+    m.tick();
+    m.machine.submit(c, m.state.time_s);
+    m.tick();
+    EXPECT_EQ(m.machine.status().mode, 0) << c.mode;
+    EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::BanTransition) << c.mode;
+  }
+}
+
+TEST(HighLevelMachine, SameModeCommandUpdatesTheRunningMode) {
+  Machine m(ModeId::RecoveryStand);
+  m.tick();
+  m.machine.submit(cmd(ModeId::Locomotion, 27, 1), m.state.time_s);
+  m.tick();
+  m.machine.submit(cmd(ModeId::Locomotion, 3, 2), m.state.time_s);
+  m.tick();
+  EXPECT_EQ(m.loco.entered, 1);
+  EXPECT_EQ(m.loco.updated, 1);
+  EXPECT_EQ(m.machine.status().gait_id, 3);
+}
+
+TEST(HighLevelMachine, SilentClientSendsTheRobotToPureDamperAfterHalfASecond) {
+  Machine m(ModeId::RecoveryStand);
+  m.tick();
+  m.machine.submit(cmd(ModeId::PoseControl, 0, 1), m.state.time_s);
+  for (int i = 0; i < 250; ++i) m.tick();  // 0.5 s
+  EXPECT_EQ(m.machine.status().mode, 21);
+  m.tick();
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, 7);
+  EXPECT_EQ(m.machine.counters().timeouts.load(), 1u);
+}
+
+TEST(HighLevelMachine, SilentClientLeavesOffAlone) {
+  Machine m;
+  m.tick();
+  m.machine.submit(cmd(ModeId::Off, 0, 1), m.state.time_s);
+  for (int i = 0; i < 400; ++i) m.tick();
+  EXPECT_EQ(m.machine.status().mode, 0);
+  EXPECT_EQ(m.damper.entered, 0);
+}
+
+TEST(HighLevelMachine, LowLevelLatchOnlyFromOffOrPureDamper) {
+  Machine m(ModeId::RecoveryStand);
+  m.tick();
+  EXPECT_FALSE(m.machine.allows_low_level_latch());
+  m.machine.submit(cmd(ModeId::PureDamper, 0, 1), m.state.time_s);
+  m.tick();
+  EXPECT_TRUE(m.machine.allows_low_level_latch());
+  m.machine.on_handover();
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, 15);
+}
+
+TEST(HighLevelMachine, TimedSequenceWaitsForEachSwitchToFinish) {
+  Machine m(ModeId::RecoveryStand);
+  m.tick();
+  m.pose.progress = 0;
+  m.machine.submit(cmd(ModeId::PoseControl, 0, 1, 10), m.state.time_s);  // 5 ticks once switched
+  m.machine.submit(cmd(ModeId::Locomotion, 1, 2, 10), m.state.time_s);
+  for (int i = 0; i < 20; ++i) m.tick();
+  EXPECT_EQ(m.machine.status().mode, 21);  // still switching: time does not run
+  m.pose.progress = 100;
+  for (int i = 0; i < 5; ++i) m.tick();
+  EXPECT_EQ(m.machine.status().mode, 21);
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, 11);
+}
+
+TEST(HighLevelMachine, ContactBitsComeFromTheEstimate) {
+  Machine m;
+  m.state.contact = {1.0, 0.0, 1.0, 1.0};
+  m.tick();
+  EXPECT_EQ(m.machine.status().contact, 0b1101);
+  for (std::uint32_t e : m.machine.status().motor_error) EXPECT_EQ(e, kMotorHealthy);
+}
+
+}  // namespace
+}  // namespace cerebellum
