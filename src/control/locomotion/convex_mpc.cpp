@@ -1,0 +1,167 @@
+#include "control/locomotion/convex_mpc.hpp"
+
+#include <Eigen/Dense>
+#include <cmath>
+#include <limits>
+#include <unsupported/Eigen/MatrixFunctions>
+
+namespace cerebellum {
+namespace {
+
+constexpr int kInputs = 3 * kNumLegs;
+constexpr int kRowsPerFoot = 5;
+
+Eigen::Matrix3d skew(const Eigen::Vector3d& v) {
+  Eigen::Matrix3d m;
+  m << 0, -v.z(), v.y(), v.z(), 0, -v.x(), -v.y(), v.x(), 0;
+  return m;
+}
+
+bool input_is_finite(const MpcInput& input) {
+  if (!input.x0.allFinite()) return false;
+  for (const auto& x : input.x_ref) {
+    if (!x.allFinite()) return false;
+  }
+  for (const auto& r : input.foot_from_com) {
+    if (!r.allFinite()) return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+ConvexMpc::ConvexMpc(const ConvexMpcConfig& config, std::unique_ptr<qp::QpSolver> solver)
+    : config_(config), solver_(std::move(solver)) {
+  a_qp_.setZero();
+  b_qp_.setZero();
+  b_kept_.resize(kSrbStates * kMpcHorizon, kInputs * kMpcHorizon);
+  weighted_b_.resize(kSrbStates * kMpcHorizon, kInputs * kMpcHorizon);
+}
+
+void ConvexMpc::continuous_dynamics(const ConvexMpcConfig& config, double yaw,
+                                    const std::array<Eigen::Vector3d, kNumLegs>& foot_from_com,
+                                    Eigen::Matrix<double, kSrbStates, kSrbStates>& a,
+                                    Eigen::Matrix<double, kSrbStates, kInputs>& b) {
+  const double c = std::cos(yaw);
+  const double s = std::sin(yaw);
+  Eigen::Matrix3d rz;
+  rz << c, -s, 0, s, c, 0, 0, 0, 1;
+  a.setZero();
+  a.block<3, 3>(0, 6) = rz.transpose();  // rpy rates from world angular velocity (small roll/pitch)
+  a.block<3, 3>(3, 9).setIdentity();      // position from velocity
+  a(11, 12) = 1.0;                        // gravity state drives vz
+  const Eigen::Matrix3d inertia_world = rz * config.inertia_diag.asDiagonal() * rz.transpose();
+  const Eigen::Matrix3d inertia_inv = inertia_world.inverse();
+  b.setZero();
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    b.block<3, 3>(6, 3 * leg) = inertia_inv * skew(foot_from_com[leg]);
+    b.block<3, 3>(9, 3 * leg) = Eigen::Matrix3d::Identity() / config.mass_kg;
+  }
+}
+
+void ConvexMpc::discretize(const Eigen::Matrix<double, kSrbStates, kSrbStates>& a,
+                           const Eigen::Matrix<double, kSrbStates, kInputs>& b, double dt,
+                           Eigen::Matrix<double, kSrbStates, kSrbStates>& ad,
+                           Eigen::Matrix<double, kSrbStates, kInputs>& bd) {
+  Eigen::Matrix<double, kSrbStates + kInputs, kSrbStates + kInputs> augmented;
+  augmented.setZero();
+  augmented.topLeftCorner<kSrbStates, kSrbStates>() = a * dt;
+  augmented.topRightCorner<kSrbStates, kInputs>() = b * dt;
+  const Eigen::Matrix<double, kSrbStates + kInputs, kSrbStates + kInputs> exponential = augmented.exp();
+  ad = exponential.topLeftCorner<kSrbStates, kSrbStates>();
+  bd = exponential.topRightCorner<kSrbStates, kInputs>();
+}
+
+void ConvexMpc::build(const MpcInput& input) {
+  // discrete dynamics at the current yaw and foot positions, used over the whole horizon
+  Eigen::Matrix<double, kSrbStates, kSrbStates> a, ad;
+  Eigen::Matrix<double, kSrbStates, kInputs> b, bd;
+  continuous_dynamics(config_, input.x0[2], input.foot_from_com, a, b);
+  discretize(a, b, config_.dt_s, ad, bd);
+
+  // condensed prediction: block (i, j) of Bqp = Ad^(i-j) Bd for j <= i
+  Eigen::Matrix<double, kSrbStates, kSrbStates> power = ad;
+  std::array<Eigen::Matrix<double, kSrbStates, kInputs>, kMpcHorizon> powers_b;
+  powers_b[0] = bd;
+  for (int i = 0; i < kMpcHorizon; ++i) {
+    a_qp_.block<kSrbStates, kSrbStates>(kSrbStates * i, 0) = power;
+    if (i + 1 < kMpcHorizon) {
+      powers_b[i + 1] = power * bd;
+      power = ad * power;
+    }
+  }
+  for (int i = 0; i < kMpcHorizon; ++i) {
+    for (int j = 0; j <= i; ++j) b_qp_.block<kSrbStates, kInputs>(kSrbStates * i, kInputs * j) = powers_b[i - j];
+  }
+
+  // keep the force variables of feet in stance
+  kept_count_ = 0;
+  for (int k = 0; k < kMpcHorizon; ++k) {
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+      if (!input.contact[k][leg]) continue;
+      for (int axis = 0; axis < 3; ++axis) kept_[kept_count_++] = kInputs * k + 3 * static_cast<int>(leg) + axis;
+    }
+  }
+  const int n = kept_count_;
+  for (int v = 0; v < n; ++v) b_kept_.col(v) = b_qp_.col(kept_[v]);
+
+  // weights: L on every predicted state, alpha on every force
+  Eigen::Matrix<double, kSrbStates * kMpcHorizon, 1> weights;
+  for (int k = 0; k < kMpcHorizon; ++k) {
+    for (int s = 0; s < 12; ++s) weights[kSrbStates * k + s] = config_.state_weights[s];
+    weights[kSrbStates * k + 12] = 0.0;
+  }
+  Eigen::Matrix<double, kSrbStates * kMpcHorizon, 1> error;  // Aqp x0 - Xref
+  error = a_qp_ * input.x0;
+  for (int k = 0; k < kMpcHorizon; ++k) error.segment<kSrbStates>(kSrbStates * k) -= input.x_ref[k];
+
+  problem_.resize({n, 0, kRowsPerFoot * n / 3});
+  auto b_view = b_kept_.leftCols(n);
+  auto weighted = weighted_b_.leftCols(n);
+  weighted.noalias() = weights.asDiagonal() * b_view;
+  problem_.hessian.noalias() = 2.0 * b_view.transpose() * weighted;
+  problem_.hessian.diagonal().array() += 2.0 * config_.force_weight;
+  problem_.linear.noalias() = 2.0 * weighted.transpose() * error;
+
+  // friction pyramid and force limits, five rows per foot force
+  const double mu = config_.friction;
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int f = 0; f < n / 3; ++f) {
+    const int col = 3 * f;
+    const int row = kRowsPerFoot * f;
+    problem_.ineq_matrix(row, col + 2) = 1.0;  // 0 <= fz <= fmax
+    problem_.ineq_lower[row] = 0.0;
+    problem_.ineq_upper[row] = config_.force_max_n;
+    for (int side = 0; side < 4; ++side) {  // |fx| <= mu fz, |fy| <= mu fz
+      const int r = row + 1 + side;
+      problem_.ineq_matrix(r, col + side / 2) = (side % 2 == 0) ? 1.0 : -1.0;
+      problem_.ineq_matrix(r, col + 2) = -mu;
+      problem_.ineq_lower[r] = -inf;
+      problem_.ineq_upper[r] = 0.0;
+    }
+  }
+}
+
+MpcOutput ConvexMpc::solve(const MpcInput& input) {
+  MpcOutput output;
+  if (!input_is_finite(input)) return output;
+  build(input);
+  output.variables = kept_count_;
+  if (kept_count_ == 0) {
+    // no foot on the ground over the whole horizon: nothing to push with
+    output.status = qp::QpStatus::Solved;
+    return output;
+  }
+  output.status = solver_->solve(problem_, solution_);
+  if (output.status != qp::QpStatus::Solved || !solution_.x.allFinite()) {
+    if (output.status == qp::QpStatus::Solved) output.status = qp::QpStatus::InvalidInput;
+    return output;
+  }
+  // the first horizon step's kept variables come first
+  for (int v = 0; v < kept_count_ && kept_[v] < kInputs; ++v) {
+    output.forces[static_cast<std::size_t>(kept_[v] / 3)][kept_[v] % 3] = solution_.x[v];
+  }
+  return output;
+}
+
+}  // namespace cerebellum

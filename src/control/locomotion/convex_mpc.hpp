@@ -1,0 +1,86 @@
+// Convex MPC on the single-rigid-body model (Di Carlo et al. 2018): 13 states
+// x = [roll, pitch, yaw, p(3), omega(3), v(3), g], 12 inputs (world-frame foot forces),
+// yaw-only rotation, exact discretisation, condensed to one dense QP over the forces of the
+// feet in stance (swing-foot variables removed), friction pyramid and force limits.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+#include <memory>
+
+#include "control/qp/qp_problem.hpp"
+#include "control/qp/qp_solution.hpp"
+#include "control/qp/qp_solver.hpp"
+#include "core/joint_layout.hpp"
+
+namespace cerebellum {
+
+inline constexpr int kMpcHorizon = 10;
+inline constexpr int kSrbStates = 13;
+
+struct ConvexMpcConfig {
+  double dt_s = 0.03;  // one MPC step = one gait segment
+  double mass_kg = 8.3644;
+  Eigen::Vector3d inertia_diag{0.07641, 0.17843, 0.197579};
+  // state weights: roll, pitch, yaw, x, y, z, wx, wy, wz, vx, vy, vz
+  std::array<double, 12> state_weights{0.25, 0.25, 10, 2, 2, 50, 0, 0, 0.3, 0.2, 0.2, 0.1};
+  double force_weight = 4e-5;
+  double friction = 0.4;
+  double force_max_n = 150.0;
+};
+
+// what the MPC needs each solve
+struct MpcInput {
+  Eigen::Matrix<double, kSrbStates, 1> x0;  // current state (g entry = -9.81)
+  // reference trajectory, one state per horizon step (k = 1..horizon)
+  std::array<Eigen::Matrix<double, kSrbStates, 1>, kMpcHorizon> x_ref;
+  // foot positions relative to the COM, world frame
+  std::array<Eigen::Vector3d, kNumLegs> foot_from_com;
+  // contact table over the horizon
+  std::array<std::array<bool, kNumLegs>, kMpcHorizon> contact;
+};
+
+struct MpcOutput {
+  // forces of the first step, world frame, the ground's force on each foot
+  std::array<Eigen::Vector3d, kNumLegs> forces{};
+  qp::QpStatus status = qp::QpStatus::InvalidInput;
+  int variables = 0;
+};
+
+class ConvexMpc {
+ public:
+  ConvexMpc(const ConvexMpcConfig& config, std::unique_ptr<qp::QpSolver> solver);
+
+  // builds the QP for this input (exposed for tests and benchmarks)
+  void build(const MpcInput& input);
+  const qp::QpProblem& problem() const { return problem_; }
+  // build + solve; NaN in the input or a failed solve gives a status other than Solved
+  MpcOutput solve(const MpcInput& input);
+
+  // continuous dynamics at a yaw angle and foot positions (exposed for tests)
+  static void continuous_dynamics(const ConvexMpcConfig& config, double yaw,
+                                  const std::array<Eigen::Vector3d, kNumLegs>& foot_from_com,
+                                  Eigen::Matrix<double, kSrbStates, kSrbStates>& a,
+                                  Eigen::Matrix<double, kSrbStates, 3 * kNumLegs>& b);
+  // exact zero-order-hold discretisation through the matrix exponential of [[A, B], [0, 0]] dt
+  static void discretize(const Eigen::Matrix<double, kSrbStates, kSrbStates>& a,
+                         const Eigen::Matrix<double, kSrbStates, 3 * kNumLegs>& b, double dt,
+                         Eigen::Matrix<double, kSrbStates, kSrbStates>& ad,
+                         Eigen::Matrix<double, kSrbStates, 3 * kNumLegs>& bd);
+
+ private:
+  ConvexMpcConfig config_;
+  std::unique_ptr<qp::QpSolver> solver_;
+  qp::QpProblem problem_;
+  qp::QpSolution solution_;
+  // condensed prediction X = Aqp x0 + Bqp U over all 12 * horizon inputs
+  Eigen::Matrix<double, kSrbStates * kMpcHorizon, kSrbStates> a_qp_;
+  Eigen::Matrix<double, kSrbStates * kMpcHorizon, 3 * kNumLegs * kMpcHorizon> b_qp_;
+  // the inputs kept in the QP (feet in stance): index into the 12 * horizon inputs
+  std::array<int, 3 * kNumLegs * kMpcHorizon> kept_{};
+  int kept_count_ = 0;
+  Eigen::MatrixXd b_kept_;
+  Eigen::MatrixXd weighted_b_;
+};
+
+}  // namespace cerebellum

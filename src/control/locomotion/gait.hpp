@@ -1,0 +1,71 @@
+// Gaits of mode 11 as contact schedules: a cycle of MPC segments (30 ms each) in which each leg
+// has a stance window starting at its offset; the rest of the cycle is swing.
+#pragma once
+
+#include <array>
+#include <optional>
+
+#include "core/joint_layout.hpp"
+
+namespace cerebellum {
+
+struct GaitPattern {
+  int id = 0;
+  int period_segments = 10;
+  std::array<int, kNumLegs> offsets{};   // segment in which stance starts (FR, FL, RR, RL)
+  std::array<int, kNumLegs> stance{};    // stance length in segments
+  // velocity limits (vx, vy, yaw rate), clamped, not rejected
+  std::array<double, 3> velocity_min{};
+  std::array<double, 3> velocity_max{};
+  bool adapts_frequency = false;         // 26: the period follows the commanded speed
+};
+
+// the pattern of a gait id of the reference table, or nothing for an unknown id
+std::optional<GaitPattern> gait_pattern(int gait_id);
+
+// the variable-frequency trot's pattern for a commanded speed (m/s)
+GaitPattern variable_trot_pattern(double speed_m_s);
+
+// where each leg is in the cycle at one instant
+struct LegPhase {
+  bool stance = true;
+  double stance_phase = 0.0;  // 0..1 through the stance window (valid in stance)
+  double swing_phase = 0.0;   // 0..1 through the swing window (valid in swing)
+  double stance_duration_s = 0.0;
+  double swing_duration_s = 0.0;
+};
+
+// runs a pattern in time: phase per leg and the contact table of the MPC horizon
+class GaitScheduler {
+ public:
+  explicit GaitScheduler(double segment_s = 0.03);
+
+  // switch pattern, keeping the cycle phase (fraction of the cycle) continuous
+  void set_pattern(const GaitPattern& pattern);
+  const GaitPattern& pattern() const { return pattern_; }
+
+  void advance(double dt_s);
+  LegPhase leg_phase(std::size_t leg) const;
+  // contact of each leg at horizon step k (k = 0 is the current segment)
+  template <std::size_t Horizon>
+  std::array<std::array<bool, kNumLegs>, Horizon> horizon_contacts() const {
+    std::array<std::array<bool, kNumLegs>, Horizon> table{};
+    for (std::size_t k = 0; k < Horizon; ++k) {
+      for (std::size_t leg = 0; leg < kNumLegs; ++leg) table[k][leg] = in_stance(leg, segment_ + static_cast<int>(k));
+    }
+    return table;
+  }
+  double segment_s() const { return segment_s_; }
+  // fraction of the cycle, 0..1
+  double cycle_phase() const;
+
+ private:
+  bool in_stance(std::size_t leg, int segment) const;
+
+  double segment_s_;
+  GaitPattern pattern_;
+  int segment_ = 0;             // current segment in the cycle
+  double time_in_segment_s_ = 0.0;
+};
+
+}  // namespace cerebellum

@@ -1,0 +1,214 @@
+#include "control/locomotion/locomotion_controller.hpp"
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+#include <algorithm>
+#include <cmath>
+
+#include "control/locomotion/swing_trajectory.hpp"
+#include "core/leg_kinematics.hpp"
+#include "core/robot_model.hpp"
+
+namespace cerebellum {
+namespace {
+
+double wrap_angle(double a) { return std::remainder(a, 2.0 * robot::kPi); }
+
+double approach(double current, double target, double max_step) {
+  return current + std::clamp(target - current, -max_step, max_step);
+}
+
+Eigen::Vector3d leg_vector(const JointArray<double>& values, std::size_t leg) {
+  return {values[3 * leg], values[3 * leg + 1], values[3 * leg + 2]};
+}
+
+Eigen::Matrix3d yaw_rotation(double yaw) {
+  return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
+}
+
+}  // namespace
+
+LocomotionController::LocomotionController(const LocomotionConfig& config, std::unique_ptr<qp::QpSolver> solver)
+    : config_(config),
+      mpc_(config.mpc, std::move(solver)),
+      worker_(mpc_),
+      scheduler_(config.tick_s * config.ticks_per_segment) {
+  target_.gait = *gait_pattern(1);
+  target_.height_m = config.default_height_m;
+  target_.step_height_front_m = target_.step_height_rear_m = config.default_step_height_m;
+}
+
+void LocomotionController::reset(const RobotState& state) {
+  scheduler_ = GaitScheduler(config_.tick_s * config_.ticks_per_segment);
+  scheduler_.set_pattern(target_.gait);
+  gait_change_pending_ = false;
+  velocity_.setZero();
+  yaw_des_ = state.rpy.z();
+  tick_in_segment_ = 0;
+  was_stance_.fill(true);
+  // until the first solution: share the weight evenly
+  const double share = config_.mpc.mass_kg * 9.81 / kNumLegs;
+  for (auto& f : forces_) f = Eigen::Vector3d(0.0, 0.0, share);
+  MpcOutput stale;
+  worker_.take(stale);
+  consecutive_failures_ = 0;
+}
+
+void LocomotionController::set_command(const LocomotionCommand& command) {
+  const bool new_gait = command.gait.id != target_.gait.id ||
+                        command.gait.period_segments != target_.gait.period_segments ||
+                        command.gait.stance != target_.gait.stance;
+  target_ = command;
+  for (int axis = 0; axis < 3; ++axis) {
+    target_.velocity[axis] =
+        std::clamp(command.velocity[axis], command.gait.velocity_min[axis], command.gait.velocity_max[axis]);
+  }
+  if (new_gait) {
+    pending_gait_ = command.gait;
+    gait_change_pending_ = true;
+  }
+}
+
+std::array<double, kNumLegs> LocomotionController::scheduled_contact() const {
+  std::array<double, kNumLegs> contact{};
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) contact[leg] = scheduler_.leg_phase(leg).stance ? 1.0 : 0.0;
+  return contact;
+}
+
+void LocomotionController::ramp_velocity() {
+  const double dv = config_.max_accel_m_s2 * config_.tick_s;
+  velocity_.x() = approach(velocity_.x(), target_.velocity.x(), dv);
+  velocity_.y() = approach(velocity_.y(), target_.velocity.y(), dv);
+  velocity_.z() = approach(velocity_.z(), target_.velocity.z(), config_.max_yaw_accel_rad_s2 * config_.tick_s);
+}
+
+Eigen::Vector3d LocomotionController::hip_on_ground_world(std::size_t leg, const RobotState& state,
+                                                          double ahead_s) const {
+  const double half_width =
+      target_.vertical_legs ? config_.vertical_leg_half_width_m : config_.pigeon_toe_half_width_m;
+  const Eigen::Vector3d hip_body(is_front_leg(leg) ? robot::kHipX : -robot::kHipX,
+                                 leg_side_sign(leg) * half_width, 0.0);
+  const double yaw_ahead = state.rpy.z() + velocity_.z() * ahead_s;
+  const Eigen::Vector3d velocity_world = yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0);
+  Eigen::Vector3d hip = state.position_world + yaw_rotation(yaw_ahead) * hip_body + velocity_world * ahead_s;
+  hip.z() = state.position_world.z() - state.height_m;  // the ground under the stance feet
+  return hip;
+}
+
+void LocomotionController::post_mpc(const RobotState& state) {
+  const double dt = config_.mpc.dt_s;
+  MpcInput& in = mpc_input_;
+  in.x0 << state.rpy, state.position_world, state.omega_world, state.velocity_world, -9.81;
+  // yaw without wrap: the reference continues from the current yaw
+  const double yaw = state.rpy.z();
+  const double yaw_offset = std::clamp(wrap_angle(yaw_des_ - yaw), -0.2, 0.2);
+  const Eigen::Vector3d velocity_world = yaw_rotation(yaw) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
+  const double ground_z = state.position_world.z() - state.height_m;
+  for (int k = 0; k < kMpcHorizon; ++k) {
+    const double t = (k + 1) * dt;
+    auto& x = in.x_ref[k];
+    x << 0.0, target_.pitch_rad, yaw + yaw_offset + velocity_.z() * t,
+        state.position_world.x() + velocity_world.x() * t, state.position_world.y() + velocity_world.y() * t,
+        ground_z + target_.height_m, 0.0, 0.0, velocity_.z(), velocity_world.x(), velocity_world.y(), 0.0, -9.81;
+  }
+  const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    in.foot_from_com[leg] = body_to_world * (state.foot_position_body[leg] - config_.com_offset_body);
+  }
+  in.contact = scheduler_.horizon_contacts<kMpcHorizon>();
+  worker_.post(in);
+}
+
+void LocomotionController::collect_mpc() {
+  if (!worker_.take(mpc_output_)) return;
+  ++telemetry_.mpc_solves;
+  telemetry_.last_status = mpc_output_.status;
+  telemetry_.last_variables = mpc_output_.variables;
+  if (mpc_output_.status != qp::QpStatus::Solved) {
+    ++telemetry_.mpc_failures;
+    ++consecutive_failures_;
+    return;  // keep the previous forces for this segment
+  }
+  consecutive_failures_ = 0;
+  forces_ = mpc_output_.forces;
+}
+
+void LocomotionController::command_stance_leg(std::size_t leg, const RobotState& state, JointCommand& command) {
+  const Eigen::Vector3d q = leg_vector(state.q, leg);
+  const Eigen::Matrix3d jacobian = foot_jacobian(leg, q);
+  const Eigen::Matrix3d world_to_body = state.orientation.toRotationMatrix().transpose();
+  // the ground's force f on the foot needs joint torques tau = -J^T f (body frame)
+  const Eigen::Vector3d tau = -jacobian.transpose() * (world_to_body * forces_[leg]);
+  // joint damping toward a foot at rest in the world
+  const Eigen::Vector3d foot_velocity_body =
+      -(world_to_body * state.velocity_world + state.omega_body.cross(state.foot_position_body[leg]));
+  Eigen::Vector3d qd_des = Eigen::Vector3d::Zero();
+  if (std::abs(jacobian.determinant()) > 1e-6) qd_des = jacobian.inverse() * foot_velocity_body;
+  for (int j = 0; j < 3; ++j) {
+    const std::size_t i = 3 * leg + j;
+    command.q_des[i] = state.q[i];
+    command.qd_des[i] = qd_des[j];
+    command.kp[i] = 0.0;
+    command.kd[i] = config_.stance_kd;
+    command.tau_ff[i] = tau[j];
+  }
+}
+
+void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& phase, const RobotState& state,
+                                             JointCommand& command) {
+  const double remaining_s = (1.0 - phase.swing_phase) * phase.swing_duration_s;
+  const Eigen::Vector3d hip = hip_on_ground_world(leg, state, remaining_s);
+  const Eigen::Vector3d velocity_des_world =
+      yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
+  Eigen::Vector3d foothold = raibert_foothold(hip, state.velocity_world, velocity_des_world, velocity_.z(),
+                                              phase.stance_duration_s, target_.height_m, config_.foothold);
+  foothold.z() += robot::kFootRadius;  // foot centre above the ground
+  const double height = is_front_leg(leg) ? target_.step_height_front_m : target_.step_height_rear_m;
+  const SwingPoint point =
+      swing_point(swing_start_[leg], foothold, height, phase.swing_phase, std::max(phase.swing_duration_s, 1e-3));
+
+  const Eigen::Matrix3d world_to_body = state.orientation.toRotationMatrix().transpose();
+  const Eigen::Vector3d p_body = world_to_body * (point.position - state.position_world);
+  const Eigen::Vector3d v_body =
+      world_to_body * (point.velocity - state.velocity_world) - state.omega_body.cross(p_body);
+  const LegIkResult ik = inverse_kinematics_in_body(leg, p_body);
+  const Eigen::Matrix3d jacobian = foot_jacobian(leg, ik.q);
+  Eigen::Vector3d qd_des = Eigen::Vector3d::Zero();
+  if (std::abs(jacobian.determinant()) > 1e-6) qd_des = jacobian.inverse() * v_body;
+  for (int j = 0; j < 3; ++j) {
+    const std::size_t i = 3 * leg + j;
+    command.q_des[i] = ik.q[j];
+    command.qd_des[i] = qd_des[j];
+    command.kp[i] = config_.swing_kp;
+    command.kd[i] = config_.swing_kd;
+    command.tau_ff[i] = 0.0;
+  }
+}
+
+void LocomotionController::compute(const RobotState& state, JointCommand& command) {
+  ramp_velocity();
+  yaw_des_ = wrap_angle(yaw_des_ + velocity_.z() * config_.tick_s);
+  if (tick_in_segment_ == 1) collect_mpc();
+  if (tick_in_segment_ == 0) {
+    if (gait_change_pending_) {
+      scheduler_.set_pattern(pending_gait_);
+      gait_change_pending_ = false;
+    }
+    post_mpc(state);
+  }
+  const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const LegPhase phase = scheduler_.leg_phase(leg);
+    if (phase.stance) {
+      command_stance_leg(leg, state, command);
+    } else {
+      if (was_stance_[leg]) swing_start_[leg] = state.position_world + body_to_world * state.foot_position_body[leg];
+      command_swing_leg(leg, phase, state, command);
+    }
+    was_stance_[leg] = phase.stance;
+  }
+  scheduler_.advance(config_.tick_s);
+  tick_in_segment_ = (tick_in_segment_ + 1) % config_.ticks_per_segment;
+}
+
+}  // namespace cerebellum

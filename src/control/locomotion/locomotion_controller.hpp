@@ -1,0 +1,97 @@
+// Mode 11's walking controller: gait schedule, convex MPC for the stance forces (in its own
+// thread), Bezier swing trajectories to Raibert footholds, and the joint commands of both.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <memory>
+
+#include "control/locomotion/convex_mpc.hpp"
+#include "control/locomotion/foothold.hpp"
+#include "control/locomotion/gait.hpp"
+#include "control/locomotion/mpc_worker.hpp"
+#include "core/robot_state.hpp"
+#include "core/types.hpp"
+
+namespace cerebellum {
+
+struct LocomotionConfig {
+  double tick_s = 0.002;
+  int ticks_per_segment = 15;  // 30 ms MPC step at 500 Hz
+  ConvexMpcConfig mpc;
+  FootholdConfig foothold;
+  double default_height_m = 0.25;
+  double default_step_height_m = 0.06;
+  double swing_kp = 40.0;  // joint gains tracking the swing trajectory (motor PD at 1 kHz)
+  double swing_kd = 1.0;
+  double stance_kd = 0.8;  // joint damping toward a foot at rest on the ground
+  double max_accel_m_s2 = 2.0;        // ramp of the commanded velocity
+  double max_yaw_accel_rad_s2 = 6.0;
+  double vertical_leg_half_width_m = 0.136;  // value bit1 = 1: feet under the hips
+  double pigeon_toe_half_width_m = 0.11;     // value bit1 = 0: energy-saving narrower stance
+  Eigen::Vector3d com_offset_body{0.013, 0.0, 0.0};
+  int failed_solves_to_give_up = 3;
+};
+
+struct LocomotionCommand {
+  GaitPattern gait;
+  Eigen::Vector3d velocity{0, 0, 0};  // vx, vy (body frame, m/s), yaw rate (rad/s); clamped to the gait
+  double height_m = 0.25;
+  double pitch_rad = 0.0;
+  double step_height_front_m = 0.06;
+  double step_height_rear_m = 0.06;
+  bool vertical_legs = false;
+};
+
+struct LocomotionTelemetry {
+  std::uint64_t mpc_solves = 0;
+  std::uint64_t mpc_failures = 0;
+  int last_variables = 0;
+  qp::QpStatus last_status = qp::QpStatus::Solved;
+};
+
+class LocomotionController {
+ public:
+  LocomotionController(const LocomotionConfig& config, std::unique_ptr<qp::QpSolver> solver);
+
+  // start walking from the current state: every foot in stance where it stands
+  void reset(const RobotState& state);
+  void set_command(const LocomotionCommand& command);
+  void compute(const RobotState& state, JointCommand& command);
+
+  // false after several failed MPC solves in a row: the caller must switch to a safe behaviour
+  bool healthy() const { return consecutive_failures_ < config_.failed_solves_to_give_up; }
+  const LocomotionTelemetry& telemetry() const { return telemetry_; }
+  const GaitScheduler& scheduler() const { return scheduler_; }
+  const Eigen::Vector3d& ramped_velocity() const { return velocity_; }
+  // stance probability of each leg from the schedule (for the estimator)
+  std::array<double, kNumLegs> scheduled_contact() const;
+
+ private:
+  void ramp_velocity();
+  void post_mpc(const RobotState& state);
+  void collect_mpc();
+  void command_swing_leg(std::size_t leg, const LegPhase& phase, const RobotState& state, JointCommand& command);
+  void command_stance_leg(std::size_t leg, const RobotState& state, JointCommand& command);
+  Eigen::Vector3d hip_on_ground_world(std::size_t leg, const RobotState& state, double ahead_s) const;
+
+  LocomotionConfig config_;
+  ConvexMpc mpc_;
+  MpcWorker worker_;
+  GaitScheduler scheduler_;
+  LocomotionCommand target_;
+  GaitPattern pending_gait_;
+  bool gait_change_pending_ = false;
+  Eigen::Vector3d velocity_{0, 0, 0};  // ramped command
+  double yaw_des_ = 0.0;
+  int tick_in_segment_ = 0;
+  std::array<bool, kNumLegs> was_stance_{};
+  std::array<Eigen::Vector3d, kNumLegs> swing_start_{};
+  std::array<Eigen::Vector3d, kNumLegs> forces_{};
+  MpcInput mpc_input_;
+  MpcOutput mpc_output_;
+  int consecutive_failures_ = 0;
+  LocomotionTelemetry telemetry_;
+};
+
+}  // namespace cerebellum
