@@ -25,9 +25,7 @@ std::vector<QpProblem> make_problems(Shape shape) {
       case Shape::Full120:
         problems.push_back(fixtures::make_condensed_mpc_qp(fixtures::stand_schedule(10), rng));
         break;
-      case Shape::Balance12:
-        problems.push_back(fixtures::make_balance_qp(rng));
-        break;
+      case Shape::Balance12: problems.push_back(fixtures::make_balance_qp(rng)); break;
     }
   }
   return problems;

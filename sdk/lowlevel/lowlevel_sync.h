@@ -19,19 +19,21 @@
 extern "C" {
 #endif
 
-/* the 32-bit flags and the 64-bit timestamp sit at naturally aligned offsets (see lowlevel.h) */
+/* the 32-bit flags and the 64-bit timestamp sit at naturally aligned offsets of page-aligned
+   mappings (see lowlevel.h), so they can be accessed atomically */
 static inline uint32_t* lowlevel_state_flag(spline_data_p shm, lowlevel_consumer_t consumer) {
-  return (uint32_t*)(void*)((char*)shm + offsetof(spline_data_t, state) +
-                            offsetof(spline_state_data_t, consumer_flags) + sizeof(uint32_t) * (size_t)consumer);
+  return (uint32_t*)((uintptr_t)shm + offsetof(spline_data_t, state) + offsetof(spline_state_data_t, consumer_flags) +
+                     sizeof(uint32_t) * (size_t)consumer);
 }
 
 static inline uint32_t* lowlevel_command_flag(spline_data_p shm) {
-  return (uint32_t*)(void*)((char*)shm + offsetof(spline_data_t, cmd) + offsetof(spline_cmd_data_t, consumer_flags) +
-                            sizeof(uint32_t) * (size_t)CONSUMER_CONTROL);
+  return (uint32_t*)((uintptr_t)shm + offsetof(spline_data_t, cmd) + offsetof(spline_cmd_data_t, consumer_flags) +
+                     sizeof(uint32_t) * (size_t)CONSUMER_CONTROL);
 }
 
 static inline size_t* lowlevel_imu_timestamp(nav_imu_p imu) {
-  return (size_t*)(void*)((char*)imu + offsetof(nav_imu_t, timestamp));
+  const uintptr_t address = (uintptr_t)imu + offsetof(nav_imu_t, timestamp);
+  return (size_t*)address;
 }
 
 /*

@@ -7,6 +7,8 @@
 #include <set>
 #include <sstream>
 
+#include "modes/motor_sdk/motor_sdk_user_parameters.hpp"
+
 namespace cerebellum {
 namespace {
 
@@ -115,6 +117,45 @@ void read_robot(const SectionReader& section, const fs::path& base_dir, MujocoBa
   section.unsigned_integer("seed", robot.noise.seed);
 }
 
+void read_shm(const SectionReader& section, ShmLowLevelConfig& shm) {
+  section.flag("enabled", shm.enabled);
+  section.text("name_prefix", shm.name_prefix);
+  const std::string prefix_problem = shm_name_prefix_problem(shm.name_prefix);
+  if (!prefix_problem.empty()) section.fail("shm.name_prefix", prefix_problem);
+  std::string mode;
+  section.text("mode", mode);
+  if (mode.empty()) return;
+  const std::optional<unsigned> parsed = parse_shm_mode(mode);
+  if (!parsed) {
+    section.fail("shm.mode", "must be octal permission bits (0600 .. 0777, with owner read and write, e.g. 0660), got '" +
+                                 mode + "'");
+  }
+  shm.mode = *parsed;
+}
+
+void read_motor_sdk(const SectionReader& section, const fs::path& base_dir, MotorSdkConfig& motor_sdk) {
+  section.flag("enabled", motor_sdk.enabled);
+  const auto read_url = [&section](const std::string& key, std::string& url) {
+    section.text(key, url);
+    if (url.find("://") == std::string::npos) {
+      section.fail("motor_sdk." + key, "must be an LCM url such as udpm://239.255.76.67:7667?ttl=255, got '" + url + "'");
+    }
+  };
+  read_url("control_url", motor_sdk.control_url);
+  read_url("estimator_url", motor_sdk.estimator_url);
+  std::string file;
+  section.text("user_parameter_file", file);
+  if (file.empty()) return;
+  const fs::path file_path(file);
+  motor_sdk.user_parameter_file = (file_path.is_absolute() ? file_path : base_dir / file_path).lexically_normal().string();
+  try {
+    motor_sdk.parameters.position_mutation_limit =
+        load_motor_sdk_user_parameters(motor_sdk.user_parameter_file).position_mutation_limit;
+  } catch (const UserParameterError& e) {
+    section.fail("motor_sdk.user_parameter_file", std::string("cannot be used: ") + e.what());
+  }
+}
+
 }  // namespace
 
 McConfig default_config() {
@@ -133,7 +174,7 @@ McConfig load_config(const std::string& path) {
   }
   McConfig config = default_config();
   if (root.IsNull()) return config;
-  const SectionReader top(root, path, "<top>", {"mc", "robot", "loop", "stand_up", "safety"});
+  const SectionReader top(root, path, "<top>", {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk"});
   const fs::path base_dir = fs::absolute(path).parent_path();
 
   if (root["mc"]) {
@@ -166,6 +207,14 @@ McConfig load_config(const std::string& path) {
     s.number("qd_des_max_rad_s", config.safety.qd_des_max_rad_s, 0.0, 30.0);
     s.number("joint_limit_margin_rad", config.safety.joint_limit_margin_rad, 0.0, 0.3);
     s.number("damping_kd", config.safety.damping_kd, 0.0, 10.0);
+  }
+  if (root["shm"]) {
+    read_shm(SectionReader(root["shm"], path, "shm", {"enabled", "name_prefix", "mode"}), config.shm);
+  }
+  if (root["motor_sdk"]) {
+    read_motor_sdk(SectionReader(root["motor_sdk"], path, "motor_sdk",
+                                 {"enabled", "control_url", "estimator_url", "user_parameter_file"}),
+                   base_dir, config.motor_sdk);
   }
   return config;
 }

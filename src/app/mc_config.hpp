@@ -7,6 +7,8 @@
 
 #include "backend/mujoco_backend.hpp"
 #include "control/stand_up_controller.hpp"
+#include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
+#include "io/shm_lowlevel/shm_lowlevel_config.hpp"
 #include "safety/command_guard.hpp"
 
 namespace cerebellum {
@@ -24,6 +26,8 @@ struct McConfig {
   double loop_period_s = 0.002;
   StandUpConfig stand_up = default_stand_up_config();
   GuardLimits safety;
+  ShmLowLevelConfig shm;
+  MotorSdkConfig motor_sdk;
 };
 
 // raised for a bad file, key or value; the message names the file, the key and what is accepted

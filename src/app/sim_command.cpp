@@ -2,6 +2,7 @@
 
 #include <cstdio>
 #include <exception>
+#include <optional>
 
 #include "app/console_reporter.hpp"
 #include "app/control_loop.hpp"
@@ -9,6 +10,8 @@
 #include "app/sim_options.hpp"
 #include "app/mc.hpp"
 #include "app/stop_signal.hpp"
+#include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
+#include "io/shm_lowlevel/shm_lowlevel_source.hpp"
 
 namespace cerebellum {
 
@@ -35,6 +38,18 @@ int run_sim_command(const std::vector<std::string>& args) {
     // client interfaces attach here: mc.arbiter() sources, loop observers, substep participants
     ConsoleReporter reporter(stdout);
     loop.add_observer(reporter);
+    std::optional<ShmLowLevelSource> shm;
+    if (config.shm.enabled) {
+      shm.emplace(config.shm, config.safety, stdout);
+      mc.arbiter().add_low_level_source(*shm);
+      loop.add_substep_participant(*shm);
+    }
+    std::optional<LcmMotorSdkAdapter> motor_sdk;
+    if (config.motor_sdk.enabled) {
+      motor_sdk.emplace(config.motor_sdk, stderr);
+      mc.arbiter().add_low_level_source(motor_sdk->source());
+      loop.add_observer(*motor_sdk);
+    }
 
     std::printf("cerebellum ready: simulated CyberDog2 (%s), %.0f Hz loop, speed %s\n",
                 config.robot.model_path.c_str(), 1.0 / config.loop_period_s,
@@ -42,11 +57,13 @@ int run_sim_command(const std::vector<std::string>& args) {
     std::fflush(stdout);
     const RunStats stats = loop.run({options.duration_s, options.speed}, stop_signal.flag());
     reporter.finish();
+    if (motor_sdk) motor_sdk->finish(stdout);
     std::printf("cerebellum stopped: %.2f s robot time in %.2f s wall time (%.1fx real time), %llu ticks, "
-                "%llu late substeps\n",
+                "%llu late substeps, trunk height %.3f m (simulator truth)\n",
                 stats.robot_time_s, stats.wall_time_s,
                 stats.wall_time_s > 0 ? stats.robot_time_s / stats.wall_time_s : 0.0,
-                static_cast<unsigned long long>(stats.ticks), static_cast<unsigned long long>(stats.late_substeps));
+                static_cast<unsigned long long>(stats.ticks), static_cast<unsigned long long>(stats.late_substeps),
+                mc.backend().ground_truth().position[2]);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cerebellum sim: %s\n", e.what());
     return 1;

@@ -14,6 +14,12 @@ constexpr double kMinGroundTrust = 0.5;
 
 double ramp(double value, double width) { return width > 0.0 ? std::clamp(value / width, 0.0, 1.0) : 1.0; }
 
+// angular velocity of a shank in the body frame: trunk rate, abad about x, hip + knee about the
+// y axis turned by the abad angle
+Vec3 shank_angular_velocity_body(const Vec3& omega_body, const Vec3& q, const Vec3& qd) {
+  return omega_body + Vec3(qd[0], 0.0, 0.0) + (qd[1] + qd[2]) * Vec3(0.0, std::cos(q[0]), std::sin(q[0]));
+}
+
 }  // namespace
 
 double force_contact_trust(double contact_probability, double time_in_contact_s, double ramp_s) {
@@ -87,17 +93,20 @@ void BodyStateEstimator::start_filter(const RobotState& state) {
 
 LegObservations BodyStateEstimator::observe_legs(const RobotState& state) const {
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
-  const Eigen::Vector3d foot_radius_down(0.0, 0.0, -robot::kFootRadius);
+  const Eigen::Vector3d foot_radius_up(0.0, 0.0, robot::kFootRadius);
   LegObservations legs;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const Vec3 q(state.q[3 * leg], state.q[3 * leg + 1], state.q[3 * leg + 2]);
     const Vec3 qd(state.qd[3 * leg], state.qd[3 * leg + 1], state.qd[3 * leg + 2]);
     const Vec3& foot_body = state.foot_position_body[leg];
     // the filter's foot point is the bottom of the foot sphere: at z = 0 on the ground
-    legs[leg].foot_relative_world = body_to_world * foot_body + foot_radius_down;
-    // a still foot: 0 = v + R (J qd + omega x r)
-    const Vec3 foot_velocity_body = foot_jacobian(leg, q) * qd + state.omega_body.cross(foot_body);
-    legs[leg].body_velocity_world = -(body_to_world * foot_velocity_body);
+    legs[leg].foot_relative_world = body_to_world * foot_body - foot_radius_up;
+    // a foot rolling without slip: its contact point is still, its centre moves at
+    // omega_shank x (radius up), and the centre's velocity is v + R (J qd + omega x r)
+    const Vec3 foot_centre_velocity_body = foot_jacobian(leg, q) * qd + state.omega_body.cross(foot_body);
+    const Vec3 shank_omega_world = body_to_world * shank_angular_velocity_body(state.omega_body, q, qd);
+    const Vec3 rolling_world = shank_omega_world.cross(foot_radius_up);
+    legs[leg].body_velocity_world = rolling_world - body_to_world * foot_centre_velocity_body;
     legs[leg].trust = trust_[leg];
   }
   return legs;

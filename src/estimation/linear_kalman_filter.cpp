@@ -8,7 +8,8 @@ namespace cerebellum {
 namespace {
 
 constexpr int kFootOffset = 6;
-constexpr int kRowsPerLeg = 7;  // relative position 3, velocity 3, height 1
+constexpr int kRowsPerLeg = LinearKalmanFilter::kMeasurementsPerLeg;
+using LegMatrix = Eigen::Matrix<double, kRowsPerLeg, LinearKalmanFilter::kStateSize>;
 
 int foot_index(std::size_t leg) { return kFootOffset + 3 * static_cast<int>(leg); }
 
@@ -22,19 +23,7 @@ bool trust_is_finite(const LinearKalmanFilter::Trust& trust) {
 
 }  // namespace
 
-LinearKalmanFilter::LinearKalmanFilter(const LinearKalmanFilterConfig& config) : config_(config) {
-  const Eigen::Matrix3d identity = Eigen::Matrix3d::Identity();
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    const int row = kRowsPerLeg * static_cast<int>(leg);
-    // foot point minus trunk position
-    h_.block<3, 3>(row, 0) = -identity;
-    h_.block<3, 3>(row, foot_index(leg)) = identity;
-    // trunk velocity
-    h_.block<3, 3>(row + 3, 3) = identity;
-    // foot height above the ground plane z = 0
-    h_(row + 6, foot_index(leg) + 2) = 1.0;
-  }
-}
+LinearKalmanFilter::LinearKalmanFilter(const LinearKalmanFilterConfig& config) : config_(config) {}
 
 void LinearKalmanFilter::reset() {
   x_.setZero();
@@ -97,45 +86,51 @@ bool LinearKalmanFilter::correct(const LegObservations& legs) {
     valid_ = false;
     return false;
   }
-  MeasurementVector z;
-  MeasurementVector r_diagonal;
   const double rel_var = config_.foot_relative_sigma_m * config_.foot_relative_sigma_m;
   const double vel_var = config_.foot_velocity_sigma_m_s * config_.foot_velocity_sigma_m_s;
   const double height_var = config_.foot_height_sigma_m * config_.foot_height_sigma_m;
+  // the legs' noises are independent, so one leg after another gives the batch update exactly
+  StateVector x = x_;
+  Covariance p = p_;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    const int row = kRowsPerLeg * static_cast<int>(leg);
-    z.segment<3>(row) = legs[leg].foot_relative_world;
-    z.segment<3>(row + 3) = legs[leg].body_velocity_world;
-    z(row + 6) = 0.0;
+    const int f = foot_index(leg);
+    // H P and S = H P H^T + R, with H's rows: foot - trunk position, trunk velocity, foot height
+    LegMatrix hp;
+    hp.topRows<3>() = p.middleRows<3>(f) - p.topRows<3>();
+    hp.middleRows<3>(3) = p.middleRows<3>(3);
+    hp.row(6) = p.row(f + 2);
+    Eigen::Matrix<double, kRowsPerLeg, kRowsPerLeg> s;
+    s.leftCols<3>() = hp.middleCols<3>(f) - hp.leftCols<3>();
+    s.middleCols<3>(3) = hp.middleCols<3>(3);
+    s.col(6) = hp.col(f + 2);
     // information in proportion to trust
     const double inverse_trust = 1.0 / std::max(std::clamp(legs[leg].trust, 0.0, 1.0), config_.min_trust);
-    r_diagonal.segment<3>(row).setConstant(rel_var * inverse_trust);
-    r_diagonal.segment<3>(row + 3).setConstant(vel_var * inverse_trust);
-    r_diagonal(row + 6) = height_var * inverse_trust;
-  }
+    s.diagonal().head<3>().array() += rel_var * inverse_trust;
+    s.diagonal().segment<3>(3).array() += vel_var * inverse_trust;
+    s(6, 6) += height_var * inverse_trust;
 
-  // K = P H^T S^-1, computed as K^T = S^-1 (H P) since S and P are symmetric
-  const MeasurementMatrix hp = h_ * p_;
-  Eigen::Matrix<double, kMeasurementSize, kMeasurementSize> s = hp * h_.transpose();
-  s.diagonal() += r_diagonal;
-  const Eigen::LDLT<Eigen::Matrix<double, kMeasurementSize, kMeasurementSize>> s_factor(s);
-  if (s_factor.info() != Eigen::Success || !s_factor.isPositive()) {
+    Eigen::Matrix<double, kRowsPerLeg, 1> innovation;
+    innovation.head<3>() = legs[leg].foot_relative_world - (x.segment<3>(f) - x.head<3>());
+    innovation.segment<3>(3) = legs[leg].body_velocity_world - x.segment<3>(3);
+    innovation(6) = -x(f + 2);
+
+    // K = P H^T S^-1, kept as K^T = S^-1 (H P) since S and P are symmetric
+    const Eigen::LDLT<Eigen::Matrix<double, kRowsPerLeg, kRowsPerLeg>> s_factor(s);
+    if (s_factor.info() != Eigen::Success || !s_factor.isPositive()) {
+      valid_ = false;
+      return false;
+    }
+    const LegMatrix k_transpose = s_factor.solve(hp);
+    x.noalias() += k_transpose.transpose() * innovation;
+    p.noalias() -= k_transpose.transpose() * hp;
+  }
+  p = 0.5 * (p + p.transpose()).eval();
+  if (!x.allFinite() || !p.allFinite() || (p.diagonal().array() <= 0.0).any()) {
     valid_ = false;
     return false;
   }
-  const GainMatrix k = s_factor.solve(hp).transpose();
-  const StateVector x_new = x_ + k * (z - h_ * x_);
-
-  // Joseph form keeps P symmetric positive definite: (I - K H) P (I - K H)^T + K R K^T
-  const Covariance i_kh = Covariance::Identity() - k * h_;
-  Covariance p_new = i_kh * p_ * i_kh.transpose() + k * r_diagonal.asDiagonal() * k.transpose();
-  p_new = 0.5 * (p_new + p_new.transpose()).eval();
-  if (!x_new.allFinite() || !p_new.allFinite()) {
-    valid_ = false;
-    return false;
-  }
-  x_ = x_new;
-  p_ = p_new;
+  x_ = x;
+  p_ = p;
   valid_ = true;
   return true;
 }

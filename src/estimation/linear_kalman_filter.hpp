@@ -40,8 +40,8 @@ using LegObservations = std::array<LegObservation, kNumLegs>;
 
 class LinearKalmanFilter {
  public:
-  static constexpr int kStateSize = 6 + 3 * static_cast<int>(kNumLegs);        // p, v, feet
-  static constexpr int kMeasurementSize = 7 * static_cast<int>(kNumLegs);      // per leg: rel 3, vel 3, height 1
+  static constexpr int kStateSize = 6 + 3 * static_cast<int>(kNumLegs);  // p, v, feet
+  static constexpr int kMeasurementsPerLeg = 7;  // foot relative position 3, trunk velocity 3, foot height 1
   using StateVector = Eigen::Matrix<double, kStateSize, 1>;
   using Covariance = Eigen::Matrix<double, kStateSize, kStateSize>;
   using Trust = std::array<double, kNumLegs>;
@@ -72,14 +72,9 @@ class LinearKalmanFilter {
   const LinearKalmanFilterConfig& config() const { return config_; }
 
  private:
-  using MeasurementVector = Eigen::Matrix<double, kMeasurementSize, 1>;
-  using MeasurementMatrix = Eigen::Matrix<double, kMeasurementSize, kStateSize>;
-  using GainMatrix = Eigen::Matrix<double, kStateSize, kMeasurementSize>;
-
   LinearKalmanFilterConfig config_;
   StateVector x_ = StateVector::Zero();
   Covariance p_ = Covariance::Zero();
-  MeasurementMatrix h_ = MeasurementMatrix::Zero();  // constant: built once
   bool initialized_ = false;
   bool valid_ = false;
 };

@@ -2,6 +2,7 @@
 // forces with friction pyramids, and the 12-variable balance QP. Used by tests and benchmarks.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <limits>
@@ -26,17 +27,17 @@ inline constexpr int kMpcStates = 13;  // rpy, p, omega, v, gravity
 inline constexpr double kGravity = 9.81;
 
 // trot: diagonal pairs FR+RL and FL+RR alternate every half period (2 stance feet per step)
-inline StanceSchedule trot_schedule(int horizon, int half_period_steps) {
-  StanceSchedule s(static_cast<std::size_t>(horizon));
-  for (int k = 0; k < horizon; ++k) {
+inline StanceSchedule trot_schedule(std::size_t horizon, std::size_t half_period_steps) {
+  StanceSchedule s(horizon);
+  for (std::size_t k = 0; k < horizon; ++k) {
     const bool first_pair = (k / half_period_steps) % 2 == 0;
-    s[static_cast<std::size_t>(k)] = {first_pair, !first_pair, !first_pair, first_pair};
+    s[k] = {first_pair, !first_pair, !first_pair, first_pair};
   }
   return s;
 }
 
-inline StanceSchedule stand_schedule(int horizon) {
-  return StanceSchedule(static_cast<std::size_t>(horizon), {true, true, true, true});
+inline StanceSchedule stand_schedule(std::size_t horizon) {
+  return StanceSchedule(horizon, {true, true, true, true});
 }
 
 inline Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
@@ -68,7 +69,7 @@ inline void add_friction_rows(QpProblem& p, Eigen::Index& row, Eigen::Index col,
   const std::array<std::array<double, 3>, 4> faces{
       {{1.0, 0.0, -mu}, {-1.0, 0.0, -mu}, {0.0, 1.0, -mu}, {0.0, -1.0, -mu}}};
   for (const auto& face : faces) {
-    for (Eigen::Index a = 0; a < 3; ++a) p.ineq_matrix(row, col + a) = face[static_cast<std::size_t>(a)];
+    p.ineq_matrix.block<1, 3>(row, col) = Eigen::RowVector3d(face.data());
     p.ineq_lower(row) = -inf;
     p.ineq_upper(row) = 0.0;
     ++row;
@@ -85,57 +86,55 @@ inline void add_friction_rows(QpProblem& p, Eigen::Index& row, Eigen::Index col,
 // `disturbed`.
 inline QpProblem make_condensed_mpc_qp(const StanceSchedule& stance, std::mt19937& rng,
                                        const ForceLimits& limits = {}, bool disturbed = true) {
-  const int horizon = static_cast<int>(stance.size());
+  using StateMatrix = Eigen::Matrix<double, kMpcStates, kMpcStates>;
+  const std::size_t horizon = stance.size();
   const double dt_s = 0.03;
   const double alpha = 4e-5;
-  const std::array<double, kMpcStates> weights{0.25, 0.25, 10, 2, 2, 50, 0, 0, 0.3,
-                                               0.2,  0.2,  0.1, 0};
+  const std::array<double, kMpcStates> weights{0.25, 0.25, 10,  2,   2,   50, 0,
+                                               0,    0.3,  0.2, 0.2, 0.1, 0};
   std::uniform_real_distribution<double> yaw_rad(-0.5, 0.5);
   const double yaw = yaw_rad(rng);
   const Eigen::Matrix3d rz = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-  const Eigen::Matrix3d inertia_world =
-      rz * Eigen::Vector3d(robot::kMpcInertiaDiag[0], robot::kMpcInertiaDiag[1],
-                           robot::kMpcInertiaDiag[2]).asDiagonal() * rz.transpose();
-  const Eigen::Matrix3d inertia_inv = inertia_world.inverse();
+  const Eigen::Vector3d inertia_body(robot::kMpcInertiaDiag.data());
+  const Eigen::Matrix3d inertia_inv = (rz * inertia_body.asDiagonal() * rz.transpose()).inverse();
 
-  Eigen::Matrix<double, kMpcStates, kMpcStates> a_cont = Eigen::Matrix<double, kMpcStates, kMpcStates>::Zero();
+  StateMatrix a_cont = StateMatrix::Zero();
   a_cont.block<3, 3>(0, 6) = rz.transpose();
   a_cont.block<3, 3>(3, 9) = Eigen::Matrix3d::Identity();
   a_cont(11, 12) = -1.0;
-  const Eigen::Matrix<double, kMpcStates, kMpcStates> a_disc =
-      Eigen::Matrix<double, kMpcStates, kMpcStates>::Identity() + dt_s * a_cont;
+  const StateMatrix a_disc = StateMatrix::Identity() + dt_s * a_cont;
 
   // column offsets of each step's stance-foot forces
-  std::vector<Eigen::Index> step_offset(static_cast<std::size_t>(horizon) + 1, 0);
-  for (int k = 0; k < horizon; ++k) {
-    int feet = 0;
-    for (bool c : stance[static_cast<std::size_t>(k)]) feet += c ? 1 : 0;
-    step_offset[static_cast<std::size_t>(k) + 1] = step_offset[static_cast<std::size_t>(k)] + 3 * feet;
+  std::vector<Eigen::Index> step_offset(horizon + 1, 0);
+  for (std::size_t k = 0; k < horizon; ++k) {
+    const auto feet = std::count(stance[k].begin(), stance[k].end(), true);
+    step_offset[k + 1] = step_offset[k] + 3 * feet;
   }
   const Eigen::Index n = step_offset.back();
-  const Eigen::Index states = static_cast<Eigen::Index>(kMpcStates) * horizon;
+  const auto state_row = [](std::size_t k) { return static_cast<Eigen::Index>(k) * kMpcStates; };
+  const Eigen::Index states = state_row(horizon);
 
   // stacked prediction X = Aqp x0 + Bqp U
   Eigen::MatrixXd aqp(states, kMpcStates);
   Eigen::MatrixXd bqp = Eigen::MatrixXd::Zero(states, n);
-  Eigen::Matrix<double, kMpcStates, kMpcStates> power = a_disc;
-  for (int k = 0; k < horizon; ++k) {
-    aqp.middleRows<kMpcStates>(k * kMpcStates) = power;
+  StateMatrix power = a_disc;
+  for (std::size_t k = 0; k < horizon; ++k) {
+    aqp.middleRows<kMpcStates>(state_row(k)) = power;
     power = a_disc * power;
   }
-  for (int j = 0; j < horizon; ++j) {
+  for (std::size_t j = 0; j < horizon; ++j) {
     const auto feet = jittered_feet(rng);
-    Eigen::MatrixXd b_step = Eigen::MatrixXd::Zero(kMpcStates, step_offset[static_cast<std::size_t>(j) + 1] - step_offset[static_cast<std::size_t>(j)]);
+    Eigen::MatrixXd b_step = Eigen::MatrixXd::Zero(kMpcStates, step_offset[j + 1] - step_offset[j]);
     Eigen::Index col = 0;
     for (std::size_t leg = 0; leg < 4; ++leg) {
-      if (!stance[static_cast<std::size_t>(j)][leg]) continue;
+      if (!stance[j][leg]) continue;
       b_step.block<3, 3>(6, col) = dt_s * inertia_inv * cross_matrix(feet[leg]);
       b_step.block<3, 3>(9, col) = (dt_s / robot::kMpcMassKg) * Eigen::Matrix3d::Identity();
       col += 3;
     }
     Eigen::MatrixXd propagated = b_step;
-    for (int k = j; k < horizon; ++k) {
-      bqp.block(k * kMpcStates, step_offset[static_cast<std::size_t>(j)], kMpcStates, b_step.cols()) = propagated;
+    for (std::size_t k = j; k < horizon; ++k) {
+      bqp.block(state_row(k), step_offset[j], kMpcStates, b_step.cols()) = propagated;
       propagated = a_disc * propagated;
     }
   }
@@ -153,17 +152,17 @@ inline QpProblem make_condensed_mpc_qp(const StanceSchedule& stance, std::mt1993
   x0(12) = kGravity;
   const double speed_mps = d * (0.9 + 0.6 * unit(rng));
   Eigen::VectorXd x_ref(states);
-  for (int k = 0; k < horizon; ++k) {
+  for (std::size_t k = 0; k < horizon; ++k) {
     Eigen::Matrix<double, kMpcStates, 1> ref = Eigen::Matrix<double, kMpcStates, 1>::Zero();
     ref(2) = yaw;
-    ref(3) = speed_mps * dt_s * (k + 1);
+    ref(3) = speed_mps * dt_s * static_cast<double>(k + 1);
     ref(5) = 0.27;
     ref(9) = speed_mps;
     ref(12) = kGravity;
-    x_ref.segment<kMpcStates>(k * kMpcStates) = ref;
+    x_ref.segment<kMpcStates>(state_row(k)) = ref;
   }
-  Eigen::VectorXd l_diag(states);
-  for (Eigen::Index i = 0; i < states; ++i) l_diag(i) = weights[static_cast<std::size_t>(i % kMpcStates)];
+  const Eigen::VectorXd l_diag = Eigen::Matrix<double, kMpcStates, 1>(weights.data())
+                                     .replicate(static_cast<Eigen::Index>(horizon), 1);
 
   QpProblem p;
   p.resize({n, 0, 5 * n / 3});

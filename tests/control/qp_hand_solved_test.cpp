@@ -36,7 +36,8 @@ TEST_P(QpHandSolved, UnconstrainedMinimumIsMinusHInverseG) {
 }
 
 TEST_P(QpHandSolved, OneActiveUpperBound) {
-  // min 0.5 |x|^2 - x1 - x2 s.t. x1 <= 0.5: x = (0.5, 1), multiplier 1 - x1 = 0.5 on the upper bound
+  // min 0.5 |x|^2 - x1 - x2 s.t. x1 <= 0.5: x = (0.5, 1), multiplier 1 - x1 = 0.5 on the upper
+  // bound
   QpProblem p;
   p.resize({2, 0, 1});
   p.hessian.setIdentity();

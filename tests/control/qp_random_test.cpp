@@ -32,8 +32,7 @@ TEST(QpRandom, GoldfarbIdnaniSatisfiesKktAndMatchesAlglib) {
     EXPECT_LT(kkt.complementarity, 1e-8);
     EXPECT_NEAR(gi_solution.objective, fixtures::objective_of(qp.problem, gi_solution.x), 1e-9);
     // the known feasible point can never beat the minimum
-    EXPECT_LE(gi_solution.objective,
-              fixtures::objective_of(qp.problem, qp.feasible_point) + 1e-9);
+    EXPECT_LE(gi_solution.objective, fixtures::objective_of(qp.problem, qp.feasible_point) + 1e-9);
     for (RowState s : gi_solution.ineq_state) active_rows += s == RowState::Inactive ? 0 : 1;
 
     ASSERT_EQ(alglib.solve(qp.problem, alglib_solution), QpStatus::Solved);

@@ -40,8 +40,7 @@ inline RandomQp make_random_feasible_qp(std::mt19937& rng, int max_variables = 2
   QpProblem& p = out.problem;
   p.resize({n, pick_eq(rng), pick_in(rng)});
   const Eigen::MatrixXd m = random_matrix(rng, n, n);
-  p.hessian = m * m.transpose() / static_cast<double>(n) +
-              0.05 * Eigen::MatrixXd::Identity(n, n);
+  p.hessian = m * m.transpose() / static_cast<double>(n) + 0.05 * Eigen::MatrixXd::Identity(n, n);
   p.linear = 3.0 * random_matrix(rng, n, 1);
   out.feasible_point = random_matrix(rng, n, 1);
   const Eigen::VectorXd& x0 = out.feasible_point;

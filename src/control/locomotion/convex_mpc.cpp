@@ -144,6 +144,7 @@ void ConvexMpc::build(const MpcInput& input) {
 
 MpcOutput ConvexMpc::solve(const MpcInput& input) {
   MpcOutput output;
+  for (auto& force : output.forces) force.setZero();
   if (!input_is_finite(input)) return output;
   build(input);
   output.variables = kept_count_;

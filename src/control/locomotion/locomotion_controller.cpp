@@ -44,6 +44,7 @@ void LocomotionController::reset(const RobotState& state) {
   gait_change_pending_ = false;
   velocity_.setZero();
   yaw_des_ = state.rpy.z();
+  height_correction_m_ = 0.0;
   tick_in_segment_ = 0;
   was_stance_.fill(true);
   // until the first solution: share the weight evenly
@@ -54,12 +55,17 @@ void LocomotionController::reset(const RobotState& state) {
   consecutive_failures_ = 0;
 }
 
-void LocomotionController::set_command(const LocomotionCommand& command) {
+bool LocomotionController::set_command(const LocomotionCommand& command) {
+  if (!command.velocity.allFinite() || !std::isfinite(command.height_m) || !std::isfinite(command.pitch_rad) ||
+      !std::isfinite(command.step_height_front_m) || !std::isfinite(command.step_height_rear_m)) {
+    return false;
+  }
   const bool new_gait = command.gait.id != target_.gait.id ||
                         command.gait.period_segments != target_.gait.period_segments ||
                         command.gait.stance != target_.gait.stance;
   target_ = command;
   for (int axis = 0; axis < 3; ++axis) {
+    // a stand gait allows no velocity: the gait still stepping while it waits brings the body to rest
     target_.velocity[axis] =
         std::clamp(command.velocity[axis], command.gait.velocity_min[axis], command.gait.velocity_max[axis]);
   }
@@ -67,6 +73,7 @@ void LocomotionController::set_command(const LocomotionCommand& command) {
     pending_gait_ = command.gait;
     gait_change_pending_ = true;
   }
+  return true;
 }
 
 std::array<double, kNumLegs> LocomotionController::scheduled_contact() const {
@@ -109,7 +116,7 @@ void LocomotionController::post_mpc(const RobotState& state) {
     auto& x = in.x_ref[k];
     x << 0.0, target_.pitch_rad, yaw + yaw_offset + velocity_.z() * t,
         state.position_world.x() + velocity_world.x() * t, state.position_world.y() + velocity_world.y() * t,
-        ground_z + target_.height_m, 0.0, 0.0, velocity_.z(), velocity_world.x(), velocity_world.y(), 0.0, -9.81;
+        ground_z + target_.height_m + height_correction_m_, 0.0, 0.0, velocity_.z(), velocity_world.x(), velocity_world.y(), 0.0, -9.81;
   }
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
@@ -188,9 +195,15 @@ void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& ph
 void LocomotionController::compute(const RobotState& state, JointCommand& command) {
   ramp_velocity();
   yaw_des_ = wrap_angle(yaw_des_ + velocity_.z() * config_.tick_s);
+  height_correction_m_ = std::clamp(
+      height_correction_m_ + config_.height_integral_gain * (target_.height_m - state.height_m) * config_.tick_s,
+      -config_.height_integral_limit_m, config_.height_integral_limit_m);
   if (tick_in_segment_ == 1) collect_mpc();
   if (tick_in_segment_ == 0) {
-    if (gait_change_pending_) {
+    // a stand gait cannot stop a moving body: keep stepping until it has slowed down
+    const bool to_stand = pending_gait_.stance[0] == pending_gait_.period_segments;
+    const bool moving = velocity_.head<2>().norm() > 0.05 || state.velocity_world.head<2>().norm() > 0.15;
+    if (gait_change_pending_ && !(to_stand && moving)) {
       scheduler_.set_pattern(pending_gait_);
       gait_change_pending_ = false;
     }

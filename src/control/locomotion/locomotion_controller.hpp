@@ -25,6 +25,9 @@ struct LocomotionConfig {
   double swing_kp = 40.0;  // joint gains tracking the swing trajectory (motor PD at 1 kHz)
   double swing_kd = 1.0;
   double stance_kd = 0.8;  // joint damping toward a foot at rest on the ground
+  // slow integral on the height error: joint friction otherwise leaves a steady offset
+  double height_integral_gain = 2.0;  // 1/s
+  double height_integral_limit_m = 0.03;
   double max_accel_m_s2 = 2.0;        // ramp of the commanded velocity
   double max_yaw_accel_rad_s2 = 6.0;
   double vertical_leg_half_width_m = 0.136;  // value bit1 = 1: feet under the hips
@@ -56,7 +59,9 @@ class LocomotionController {
 
   // start walking from the current state: every foot in stance where it stands
   void reset(const RobotState& state);
-  void set_command(const LocomotionCommand& command);
+  // false (and nothing changes) when a number in the command is not finite; velocities are
+  // clamped to the gait's limits
+  bool set_command(const LocomotionCommand& command);
   void compute(const RobotState& state, JointCommand& command);
 
   // false after several failed MPC solves in a row: the caller must switch to a safe behaviour
@@ -84,6 +89,7 @@ class LocomotionController {
   bool gait_change_pending_ = false;
   Eigen::Vector3d velocity_{0, 0, 0};  // ramped command
   double yaw_des_ = 0.0;
+  double height_correction_m_ = 0.0;
   int tick_in_segment_ = 0;
   std::array<bool, kNumLegs> was_stance_{};
   std::array<Eigen::Vector3d, kNumLegs> swing_start_{};

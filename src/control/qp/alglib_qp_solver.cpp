@@ -113,8 +113,8 @@ QpStatus AlglibQpSolver::run(const QpProblem& problem, QpSolution& solution) {
     return QpStatus::NotConvex;
   }
 
-  solution.iterations = static_cast<int>(ws.report.outeriterationscount +
-                                         ws.report.inneriterationscount);
+  solution.iterations =
+      static_cast<int>(ws.report.outeriterationscount + ws.report.inneriterationscount);
   const QpStatus status = status_from_termination(ws.report.terminationtype);
   if (status != QpStatus::Solved && status != QpStatus::MaxIterations) return status;
 

@@ -32,7 +32,8 @@ void GoldfarbIdnaniSolver::reserve(const QpDimensions& max_dims) {
     cholesky_.setZero(n, n);
     basis_.setZero(n, n);
     triangle_.setZero(n, n);
-    for (Eigen::VectorXd* v : {&x_, &normal_, &projected_, &primal_dir_, &dual_dir_, &multipliers_}) {
+    for (Eigen::VectorXd* v :
+         {&x_, &normal_, &projected_, &primal_dir_, &dual_dir_, &multipliers_}) {
       v->setZero(n);
     }
     active_.resize(to_size(n));

@@ -42,10 +42,10 @@ class GoldfarbIdnaniSolver final : public QpSolver {
  private:
   // result of computing the step for one constraint normal
   struct StepLengths {
-    double dual = 0.0;          // largest step keeping active inequality multipliers >= 0
+    double dual = 0.0;           // largest step keeping active inequality multipliers >= 0
     Eigen::Index blocking = -1;  // active position limiting the dual step (-1: none)
-    double primal = 0.0;        // step that makes the new constraint exactly active
-    bool has_primal = false;    // false when the normal depends on the active normals
+    double primal = 0.0;         // step that makes the new constraint exactly active
+    bool has_primal = false;     // false when the normal depends on the active normals
   };
 
   QpStatus run(const QpProblem& problem, QpSolution& solution);
@@ -73,14 +73,15 @@ class GoldfarbIdnaniSolver final : public QpSolver {
   Eigen::MatrixXd basis_;     // J (n x n)
   Eigen::MatrixXd triangle_;  // R (q x q used)
   Eigen::VectorXd x_;
-  Eigen::VectorXd normal_;        // n_p, normal of the constraint being added
-  Eigen::VectorXd projected_;     // d = J' n_p
-  Eigen::VectorXd primal_dir_;    // z = J2 d2
-  Eigen::VectorXd dual_dir_;      // r = R^-1 d1
-  Eigen::VectorXd multipliers_;   // u of the active constraints, in active order
-  Eigen::VectorXd row_values_;    // C x
-  Eigen::VectorXd row_scale_;     // 1 / ||C_i|| (1 for zero rows)
-  // constraint ids: equality k -> k; inequality row i -> m_eq + 2 i (lower) or m_eq + 2 i + 1 (upper)
+  Eigen::VectorXd normal_;       // n_p, normal of the constraint being added
+  Eigen::VectorXd projected_;    // d = J' n_p
+  Eigen::VectorXd primal_dir_;   // z = J2 d2
+  Eigen::VectorXd dual_dir_;     // r = R^-1 d1
+  Eigen::VectorXd multipliers_;  // u of the active constraints, in active order
+  Eigen::VectorXd row_values_;   // C x
+  Eigen::VectorXd row_scale_;    // 1 / ||C_i|| (1 for zero rows)
+  // constraint ids: equality k -> k; inequality row i -> m_eq + 2 i (lower) or m_eq + 2 i + 1
+  // (upper)
   std::vector<Eigen::Index> active_;
   std::vector<char> side_is_active_;  // per inequality side, indexed by 2 i + side
 };

@@ -32,11 +32,24 @@ ShmLowLevelSource::ShmLowLevelSource(const ShmLowLevelConfig& config, const Guar
       damping_kd_(limits.damping_kd),
       spline_(shm_spline_object_name(config.name_prefix), LOWLEVEL_SPLINE_SHM_SIZE, config.mode),
       imu_(shm_imu_object_name(config.name_prefix), LOWLEVEL_IMU_SHM_SIZE, config.mode),
-      log_(log) {
+      log_(log),
+      log_file_(log) {
   active_.kd.fill(damping_kd_);
+  std::fprintf(log_file_, "cerebellum shm: serving %s and %s (mode %04o), 1 ms updates\n", spline_.name().c_str(),
+               imu_.name().c_str(), config_.mode);
 }
 
-ShmLowLevelSource::~ShmLowLevelSource() = default;
+ShmLowLevelSource::~ShmLowLevelSource() {
+  log_.flush();
+  const ShmLowLevelCounters c = counters();
+  std::fprintf(log_file_,
+               "cerebellum shm: closing %s and %s: %llu cycles, %llu frames taken, %llu rejected, %llu command "
+               "timeouts\n",
+               spline_.name().c_str(), imu_.name().c_str(), static_cast<unsigned long long>(c.cycles),
+               static_cast<unsigned long long>(c.frames_taken), static_cast<unsigned long long>(c.frames_rejected),
+               static_cast<unsigned long long>(c.command_timeouts));
+  std::fflush(log_file_);
+}
 
 std::atomic_ref<std::uint32_t> ShmLowLevelSource::state_flag(std::size_t consumer) const {
   return atomic_at<std::uint32_t>(spline(), kStateFlagsOffset + sizeof(std::uint32_t) * consumer);

@@ -11,7 +11,7 @@
 #include <cstdio>
 
 #include "app/control_loop.hpp"
-#include "app/source_arbiter.hpp"
+#include "modes/source_arbiter.hpp"
 #include "io/shm_lowlevel/shm_codec.hpp"
 #include "io/shm_lowlevel/shm_event_log.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
@@ -78,6 +78,7 @@ class ShmLowLevelSource final : public LowLevelSource, public SubstepParticipant
   ShmRegion spline_;
   ShmRegion imu_;
   ShmEventLog log_;
+  std::FILE* log_file_;
 
   // loop thread only
   bool latched_ = false;

@@ -6,6 +6,9 @@ namespace cerebellum {
 namespace {
 
 constexpr std::uint16_t kJumpBits = kMotorSdkAbadJump | kMotorSdkHipJump | kMotorSdkKneeJump;
+// robot time is a sum of float steps: thresholds are compared with this much slack, so a gap of
+// exactly 500 ms of ticks counts as 500 ms
+constexpr double kTimeToleranceS = 1e-9;
 
 }  // namespace
 
@@ -46,8 +49,9 @@ void MotorSdkSource::compute(const RobotState& state, JointCommand& command) {
 
   const double now_s = state.time_s;
   const double gap_s = now_s - last_frame_s_;
-  set_err_bits(kMotorSdkCommandLate, gap_s > parameters_.late_after_s);
-  if ((status_.err_flag & kMotorSdkCommandLost) == 0 && gap_s > parameters_.lost_after_s) {
+  const bool late = gap_s > parameters_.late_after_s + kTimeToleranceS;
+  set_err_bits(kMotorSdkCommandLate, late);
+  if ((status_.err_flag & kMotorSdkCommandLost) == 0 && gap_s > parameters_.lost_after_s + kTimeToleranceS) {
     raise_lost(now_s);
     bump(commands_lost_);
   }
@@ -55,24 +59,26 @@ void MotorSdkSource::compute(const RobotState& state, JointCommand& command) {
   if (status_.err_flag & kMotorSdkCommandLost) {
     // damping lets the robot sink and lie down; limp once it has had time to
     command = passive_command();
-    if (now_s - lost_since_s_ < parameters_.lost_damping_duration_s) command.kd.fill(parameters_.lost_damping_kd);
+    if (now_s - lost_since_s_ < parameters_.lost_damping_duration_s - kTimeToleranceS) {
+      command.kd.fill(parameters_.lost_damping_kd);
+    }
     return;
   }
   command = active_;
-  if (gap_s > parameters_.late_after_s) decay_late_command(command, state.q, gap_s, parameters_);
+  if (late) decay_late_command(command, state.q, gap_s, parameters_);
 }
 
 void MotorSdkSource::take_frame(const StampedFrame& stamped, const RobotState& state) {
   const double interval_s = has_frame_ ? stamped.received_s - last_frame_s_ : 0.0;
   status_.ctrl_topic_interval_ms = interval_s * 1000.0;
-  const bool follows_closely = has_frame_ && interval_s <= parameters_.lost_after_s;
+  const bool follows_closely = has_frame_ && interval_s <= parameters_.lost_after_s + kTimeToleranceS;
   has_frame_ = true;
   last_frame_s_ = stamped.received_s;
   JointCommand frame = stamped.command;
 
   if (status_.err_flag & kMotorSdkCommandLost) {
     // only a live stream of all-zero frames, after the robot has had time to lie down, clears it
-    const bool lain_long_enough = stamped.received_s - lost_since_s_ >= parameters_.lie_before_clear_s;
+    const bool lain_long_enough = stamped.received_s - lost_since_s_ >= parameters_.lie_before_clear_s - kTimeToleranceS;
     if (follows_closely && lain_long_enough && is_all_zero_frame(frame, parameters_.zero_tolerance)) {
       set_err_bits(kMotorSdkCommandLost, false);
       active_ = passive_command();

@@ -1,0 +1,115 @@
+#include "control/balance_controller.hpp"
+
+#include <algorithm>
+
+#include <Eigen/Geometry>
+
+#include "core/leg_kinematics.hpp"
+
+namespace cerebellum {
+namespace {
+
+constexpr double kGravity = 9.81;
+
+Eigen::Vector3d clamp_norm(const Eigen::Vector3d& v, double max_norm) {
+  const double norm = v.norm();
+  return norm > max_norm ? Eigen::Vector3d(v * (max_norm / norm)) : v;
+}
+
+}  // namespace
+
+Vector6d gravity_wrench(double mass_kg) {
+  Vector6d w = Vector6d::Zero();
+  w(2) = mass_kg * kGravity;
+  return w;
+}
+
+BalanceController::BalanceController(const BalanceConfig& config)
+    : config_(config), distribution_(config.distribution) {}
+
+void BalanceController::start(const RobotState& state) {
+  frame_.anchor(state);
+  was_in_air_ = {};
+  estimated_pose_ = frame_.anchored_pose();
+  estimated_velocity_.setZero();
+}
+
+Eigen::Vector2d BalanceController::body_xy_for_com(const Eigen::Vector2d& com_xy, const Eigen::Vector3d& rpy) const {
+  return com_xy - (rotation_from_rpy(rpy) * config_.com_in_body).head<2>();
+}
+
+void BalanceController::compute(const RobotState& state, const BalanceTarget& target, JointCommand& command) {
+  const Eigen::Matrix3d rotation = frame_.body_rotation(state);
+
+  // a leg that has just been put down stands where its foot is now
+  LegMask stance{};
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    stance[leg] = !target.in_air[leg];
+    if (was_in_air_[leg] && stance[leg]) {
+      frame_.set_foothold(leg, estimated_pose_.position + rotation * state.foot_position_body[leg]);
+    }
+    was_in_air_[leg] = target.in_air[leg];
+  }
+  estimated_pose_.rpy = frame_.body_rpy(state);
+  frame_.estimate(state, stance, estimated_pose_.position, estimated_velocity_);
+  const Eigen::Vector3d omega = frame_.angular_velocity(state);
+
+  // desired wrench about the centre of mass
+  const Eigen::Vector3d position_error = target.pose.position - estimated_pose_.position;
+  Eigen::Vector3d acceleration = config_.kp_position.cwiseProduct(position_error) -
+                                 config_.kd_position.cwiseProduct(estimated_velocity_);
+  if (!target.hold_position_xy) {
+    acceleration.head<2>() = -config_.kd_position.head<2>().cwiseProduct(estimated_velocity_.head<2>());
+  }
+  acceleration.head<2>() = clamp_norm(Eigen::Vector3d(acceleration.x(), acceleration.y(), 0.0),
+                                      config_.max_position_acceleration).head<2>();
+  const Eigen::Matrix3d rotation_des = rotation_from_rpy(target.pose.rpy);
+  const Eigen::AngleAxisd rotation_error(rotation_des * rotation.transpose());
+  const Eigen::Vector3d angle_error = rotation_error.angle() * rotation_error.axis();
+  const Eigen::Vector3d angular_acceleration =
+      clamp_norm(config_.kp_orientation.cwiseProduct(angle_error) - config_.kd_orientation.cwiseProduct(omega),
+                 config_.max_tilt_acceleration);
+  const Eigen::Matrix3d inertia = rotation * config_.inertia_diag.asDiagonal() * rotation.transpose();
+  wrench_.head<3>() = config_.mass_kg * (acceleration + Eigen::Vector3d(0.0, 0.0, kGravity));
+  wrench_.tail<3>() = inertia * angular_acceleration;
+
+  // share it among the loaded feet
+  std::array<Eigen::Vector3d, kNumLegs> feet_from_com{};
+  std::array<double, kNumLegs> force_limit{};
+  const Eigen::Vector3d com = rotation * config_.com_in_body;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    feet_from_com[leg] = rotation * state.foot_position_body[leg] - com;
+    force_limit[leg] = stance[leg] ? target.force_z_max_n[leg] : 0.0;
+  }
+  solve_ok_ = distribution_.solve(feet_from_com, force_limit, wrench_, forces_) == qp::QpStatus::Solved;
+
+  // joints: forces on loaded legs, foot targets on legs in the air
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const std::size_t j = kJointsPerLeg * leg;
+    const Vec3 q(state.q[j], state.q[j + 1], state.q[j + 2]);
+    if (stance[leg]) {
+      const Vec3 tau = -foot_jacobian(leg, q).transpose() * (rotation.transpose() * forces_[leg]);
+      for (std::size_t k = 0; k < kJointsPerLeg; ++k) {
+        command.q_des[j + k] = state.q[j + k];
+        command.qd_des[j + k] = 0.0;
+        command.kp[j + k] = 0.0;
+        command.kd[j + k] = config_.stance_kd;
+        command.tau_ff[j + k] = tau[static_cast<Eigen::Index>(k)];
+      }
+      continue;
+    }
+    // foot target seen from the desired body pose
+    const Eigen::Vector3d foot_body =
+        rotation_des.transpose() * (target.swing_foot[leg] - target.pose.position);
+    const LegIkResult ik = inverse_kinematics_in_body(leg, foot_body);
+    for (std::size_t k = 0; k < kJointsPerLeg; ++k) {
+      command.q_des[j + k] = ik.q[static_cast<Eigen::Index>(k)];
+      command.qd_des[j + k] = 0.0;
+      command.kp[j + k] = config_.swing_kp;
+      command.kd[j + k] = config_.swing_kd;
+      command.tau_ff[j + k] = 0.0;
+    }
+  }
+}
+
+}  // namespace cerebellum

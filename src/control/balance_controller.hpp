@@ -1,0 +1,82 @@
+// Force-based stand (the QP stand): a PD on the body pose gives the wrench the ground must
+// apply, ForceDistribution shares it among the loaded feet, and the legs make those forces with
+// tau = -J' R' f. Legs in the air follow a foot target with a joint PD.
+#pragma once
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "control/force_distribution.hpp"
+#include "control/stance_frame.hpp"
+#include "core/robot_model.hpp"
+#include "core/robot_state.hpp"
+#include "core/types.hpp"
+
+namespace cerebellum {
+
+struct BalanceConfig {
+  double mass_kg = robot::kTotalMassKg;
+  Eigen::Vector3d inertia_diag{robot::kMpcInertiaDiag[0], robot::kMpcInertiaDiag[1], robot::kMpcInertiaDiag[2]};
+  // centre of mass of the whole robot in the body frame (trunk COM weighted with the legs)
+  Eigen::Vector3d com_in_body{0.013, 0.0, -0.01};
+  // PD gains as accelerations: per m (1/s^2) and per m/s (1/s), per rad and per rad/s
+  Eigen::Vector3d kp_position{60.0, 60.0, 150.0};
+  Eigen::Vector3d kd_position{12.0, 12.0, 18.0};
+  Eigen::Vector3d kp_orientation{150.0, 150.0, 100.0};
+  Eigen::Vector3d kd_orientation{14.0, 14.0, 12.0};
+  double max_tilt_acceleration = 30.0;  // rad/s^2 cap on the orientation PD
+  double max_position_acceleration = 6.0;  // m/s^2 cap on the horizontal PD
+  ForceDistributionConfig distribution;
+  double stance_kd = 0.3;  // joint damping on loaded legs (N m s/rad)
+  double swing_kp = 40.0;
+  double swing_kd = 1.5;
+};
+
+// where the body should be and what each leg does (stance frame)
+struct BalanceTarget {
+  BodyPose pose;
+  // false: horizontal velocity is damped but the position is not pulled back
+  bool hold_position_xy = true;
+  // per leg: the largest normal force it may carry; 0 with in_air set: foot follows swing_foot
+  std::array<double, kNumLegs> force_z_max_n{150.0, 150.0, 150.0, 150.0};
+  LegMask in_air{false, false, false, false};
+  std::array<Eigen::Vector3d, kNumLegs> swing_foot{};
+};
+
+class BalanceController {
+ public:
+  explicit BalanceController(const BalanceConfig& config = {});
+
+  // anchor the stance frame at the current feet
+  void start(const RobotState& state);
+  void compute(const RobotState& state, const BalanceTarget& target, JointCommand& command);
+
+  const StanceFrame& frame() const { return frame_; }
+  const BalanceConfig& config() const { return config_; }
+  // estimates of the last compute (stance frame)
+  const BodyPose& estimated_pose() const { return estimated_pose_; }
+  const Eigen::Vector3d& estimated_velocity() const { return estimated_velocity_; }
+  // the wrench demanded and the forces chosen at the last compute
+  const Vector6d& demanded_wrench() const { return wrench_; }
+  const std::array<Eigen::Vector3d, kNumLegs>& foot_forces() const { return forces_; }
+  bool last_solve_ok() const { return solve_ok_; }
+  // body origin that puts the centre of mass at com_xy with the given orientation (stance frame)
+  Eigen::Vector2d body_xy_for_com(const Eigen::Vector2d& com_xy, const Eigen::Vector3d& rpy) const;
+
+ private:
+  BalanceConfig config_;
+  StanceFrame frame_;
+  ForceDistribution distribution_;
+  LegMask was_in_air_{};
+  BodyPose estimated_pose_;
+  Eigen::Vector3d estimated_velocity_ = Eigen::Vector3d::Zero();
+  Vector6d wrench_ = Vector6d::Zero();
+  std::array<Eigen::Vector3d, kNumLegs> forces_{};
+  bool solve_ok_ = false;
+};
+
+// wrench that keeps a body of this mass at rest against gravity with no torque
+Vector6d gravity_wrench(double mass_kg);
+
+}  // namespace cerebellum

@@ -1,0 +1,67 @@
+#include "control/qp_stand.hpp"
+
+#include <algorithm>
+
+namespace cerebellum {
+
+QpStand::QpStand(const QpStandConfig& config)
+    : config_(config), controller_(config.balance), support_(config.support) {}
+
+void QpStand::start(const RobotState& state) {
+  controller_.start(state);
+  support_.reset();
+  last_time_s_ = state.time_s;
+  started_ = true;
+  // the current pose in goal terms: offset from the centred stand, height
+  const BodyPose& anchored = controller_.frame().anchored_pose();
+  const Eigen::Vector2d centred = controller_.body_xy_for_com(controller_.frame().centroid(kAllLegs).head<2>(), anchored.rpy);
+  BodyPose here = anchored;
+  here.position.head<2>() -= centred;
+  ramp_.hold(here);
+  goal_ = QpStandGoal{};
+  goal_.pose = here;
+}
+
+void QpStand::set_goal(const QpStandGoal& goal, double duration_s) {
+  QpStandGoal bounded = goal;
+  bounded.pose.position.z() = std::min(bounded.pose.position.z(), config_.max_height_m);
+  goal_ = bounded;
+  ramp_.move_to(bounded.pose, duration_s > 0.0 ? duration_s : move_duration_s(ramp_.value(), bounded.pose, config_.speed));
+  support_.request(bounded.lifted_leg);
+}
+
+double QpStand::progress() const {
+  return settled() ? 1.0 : std::min(ramp_.fraction(), 0.99);
+}
+
+void QpStand::compute(const RobotState& state, JointCommand& command) {
+  const double dt = started_ ? std::max(state.time_s - last_time_s_, 0.0) : 0.0;
+  last_time_s_ = state.time_s;
+  ramp_.advance(dt);
+  support_.advance(dt);
+
+  // centre of mass over the footholds, shifted towards the three that stay down
+  const StanceFrame& frame = controller_.frame();
+  const BodyPose& pose = ramp_.value();
+  Eigen::Vector2d com_xy = frame.centroid(kAllLegs).head<2>();
+  BalanceTarget target;
+  target.hold_position_xy = goal_.hold_position_xy;
+  double offset_scale = 1.0;
+  if (const int leg = support_.leg(); leg != SupportSequence::kNoLeg) {
+    LegMask support = kAllLegs;
+    support[static_cast<std::size_t>(leg)] = false;
+    com_xy += support_.shift() * (frame.centroid(support).head<2>() - com_xy);
+    // an offset would take the centre of mass off the triangle: fade it while a leg is up
+    offset_scale = 1.0 - support_.shift();
+    const std::size_t l = static_cast<std::size_t>(leg);
+    target.force_z_max_n[l] = support_.load() * config_.balance.distribution.force_z_max_n;
+    target.in_air[l] = support_.in_air();
+    target.swing_foot[l] = frame.foothold(l) + support_.lift() * goal_.lifted_foot_offset;
+  }
+  target.pose.rpy = pose.rpy;
+  target.pose.position.head<2>() = controller_.body_xy_for_com(com_xy, pose.rpy) + offset_scale * pose.position.head<2>();
+  target.pose.position.z() = pose.position.z();
+  controller_.compute(state, target, command);
+}
+
+}  // namespace cerebellum

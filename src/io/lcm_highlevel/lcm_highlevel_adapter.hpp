@@ -1,0 +1,120 @@
+// The CyberDog2 high-level interface on LCM. One thread receives robot_control_cmd (raw, decoded
+// here so malformed packets are counted), stamps each command with the robot time of the newest
+// cycle and hands it to the HighLevelMachine; it answers user_gait_file, and publishes
+// robot_control_response, motor_temperature and global_to_robot from what the loop thread copies
+// into a ring. The loop thread only decides what is due and copies (on_cycle).
+// state_estimator and leg_control_data belong to the motor SDK adapter (io/lcm_motor_sdk).
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "app/control_loop.hpp"
+#include "core/spsc_ring.hpp"
+#include "io/lcm_highlevel/lcm_highlevel_config.hpp"
+#include "io/lcm_highlevel/response_schedule.hpp"
+#include "io/lcm_highlevel/user_gait_store.hpp"
+#include "modes/high_level_machine.hpp"
+
+namespace lcm {
+class LCM;
+struct ReceiveBuffer;
+}  // namespace lcm
+
+namespace cerebellum {
+
+struct HighLevelInterfaceCounters {
+  std::uint64_t commands_submitted = 0;  // robot_control_cmd packets handed to machine.submit
+  std::uint64_t wrong_fingerprint = 0;   // robot_control_cmd packets dropped ...
+  std::uint64_t truncated = 0;
+  std::uint64_t oversized = 0;
+  std::uint64_t responses_published = 0;
+  std::uint64_t odometry_published = 0;
+  std::uint64_t temperatures_published = 0;
+  std::uint64_t gait_files_accepted = 0;
+  std::uint64_t gait_files_refused = 0;
+  std::uint64_t telemetry_dropped = 0;  // cycles the interface thread could not keep up with
+};
+
+class LcmHighLevelAdapter final : public CycleObserver {
+ public:
+  // opens the three urls and starts the thread; throws std::runtime_error naming a url LCM cannot
+  // open. log: where notes and warnings go (never written from the loop thread)
+  LcmHighLevelAdapter(HighLevelMachine& machine, const HighLevelLcmConfig& config, double loop_period_s,
+                      std::FILE* log);
+  ~LcmHighLevelAdapter() override;
+  LcmHighLevelAdapter(const LcmHighLevelAdapter&) = delete;
+  LcmHighLevelAdapter& operator=(const LcmHighLevelAdapter&) = delete;
+
+  // loop thread, right after the tick: note the robot time, decide what is due, copy
+  void on_cycle(const CycleRecord& record) override;
+
+  // stops the thread (publishing what is queued) and prints one summary line to out
+  void finish(std::FILE* out);
+  HighLevelInterfaceCounters counters() const;
+  const UserGaitStore& user_gaits() const { return user_gaits_; }
+
+ private:
+  struct Telemetry {
+    PublishDue due;
+    std::uint64_t tick = 0;
+    HighLevelStatus status;
+    RobotState state;
+  };
+  struct LoggedCounts {
+    std::uint64_t wrong_fingerprint = 0, truncated = 0, oversized = 0;
+    std::uint64_t non_finite = 0, queue_full = 0, ring_overflow = 0, timeouts = 0, telemetry_dropped = 0;
+  };
+
+  void run();
+  void on_command(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+  void on_gait_file(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+  void publish(const Telemetry& telemetry);
+  void publish_response(const HighLevelStatus& status, std::uint64_t tick);
+  void keep_response_alive();
+  void log_refusals();
+  void log_counts_once_per_second();
+  LoggedCounts current_counts() const;
+
+  HighLevelMachine& machine_;
+  std::FILE* log_;
+  double keepalive_s_;
+  std::unique_ptr<lcm::LCM> command_lcm_;
+  std::unique_ptr<lcm::LCM> response_lcm_;
+  std::unique_ptr<lcm::LCM> odometry_lcm_;
+  UserGaitStore user_gaits_;
+  // loop thread
+  ResponseSchedule schedule_;
+  // loop thread -> interface thread
+  SpscRing<Telemetry, 128> telemetry_;
+  std::atomic<double> robot_time_s_{0.0};  // of the newest cycle: stamps received commands
+  std::atomic<std::uint64_t> latest_tick_{0};
+  // interface thread -> anyone
+  std::atomic<std::uint64_t> commands_submitted_{0};
+  std::atomic<std::uint64_t> wrong_fingerprint_{0};
+  std::atomic<std::uint64_t> truncated_{0};
+  std::atomic<std::uint64_t> oversized_{0};
+  std::atomic<std::uint64_t> responses_published_{0};
+  std::atomic<std::uint64_t> odometry_published_{0};
+  std::atomic<std::uint64_t> temperatures_published_{0};
+  std::atomic<std::uint64_t> gait_files_accepted_{0};
+  std::atomic<std::uint64_t> gait_files_refused_{0};
+  std::atomic<bool> running_{true};
+  // interface thread only
+  HighLevelStatus last_status_;
+  bool has_status_ = false;
+  std::uint64_t last_response_tick_ = 0;
+  double last_response_wall_s_ = 0.0;
+  double refusal_window_start_s_ = 0.0;
+  int refusals_in_window_ = 0;
+  std::uint64_t refusals_suppressed_ = 0;
+  LoggedCounts logged_counts_;
+  double next_count_log_s_ = 0.0;
+  std::thread thread_;
+};
+
+}  // namespace cerebellum

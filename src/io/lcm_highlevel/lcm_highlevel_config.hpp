@@ -1,0 +1,24 @@
+// Configuration of the CyberDog2 high-level LCM interface (config section `highlevel:`).
+#pragma once
+
+#include <string>
+
+namespace cerebellum {
+
+struct HighLevelLcmConfig {
+  // off by default: an enabled interface opens multicast sockets, which belong in a robot's
+  // network or a private network namespace
+  bool enabled = false;
+  std::string command_url = "udpm://239.255.76.67:7671?ttl=255";   // robot_control_cmd, user_gait_*
+  std::string response_url = "udpm://239.255.76.67:7670?ttl=255";  // robot_control_response, motor_temperature
+  std::string odometry_url = "udpm://239.255.76.67:7667?ttl=255";  // global_to_robot
+  // the newest response is sent again after this much wall time without one, as long as the loop
+  // still ticks (slow simulation speeds); 0 disables it
+  double response_keepalive_s = 0.1;
+};
+
+// empty when the url is usable, else what is wrong; accepted: udpm://<IPv4 multicast group>:<port>
+// with optional ?key=value&... options, where ttl (if given) is 0..255
+std::string lcm_url_problem(const std::string& url);
+
+}  // namespace cerebellum

@@ -1,0 +1,176 @@
+#include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <chrono>
+#include <stdexcept>
+#include <string>
+
+#include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
+#include "io/lcm_motor_sdk/robot_state_messages.hpp"
+
+namespace cerebellum {
+namespace {
+
+constexpr const char* kMotorCtrlChannel = "motor_ctrl";
+constexpr const char* kMotorCtrlStateChannel = "motor_ctrl_state";
+constexpr const char* kSpiDataChannel = "spi_data";
+constexpr const char* kLegControlDataChannel = "leg_control_data";
+constexpr const char* kStateEstimatorChannel = "state_estimator";
+// outside motor mode the state feedback goes out every 10th tick (50 Hz at 500 Hz)
+constexpr std::uint64_t kIdleFeedbackDecimation = 10;
+
+std::unique_ptr<lcm::LCM> open_lcm(const std::string& url) {
+  auto lcm = std::make_unique<lcm::LCM>(url);
+  if (!lcm->good()) throw std::runtime_error("motor sdk: cannot open LCM url " + url);
+  return lcm;
+}
+
+template <typename Message>
+void publish_message(lcm::LCM& lcm, const char* channel, const Message& message) {
+  lcm.publish(channel, &message);
+}
+
+// appends "<count> <what>" when count is not zero
+void describe(std::string& text, std::uint64_t count, const char* what) {
+  if (count == 0) return;
+  text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + what;
+}
+
+double wall_seconds() {
+  using Clock = std::chrono::steady_clock;
+  return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
+}
+
+}  // namespace
+
+LcmMotorSdkAdapter::LcmMotorSdkAdapter(const MotorSdkConfig& config, std::FILE* log)
+    : source_(config.parameters), log_(log), control_lcm_(open_lcm(config.control_url)),
+      estimator_lcm_(open_lcm(config.estimator_url)) {
+  control_lcm_->subscribe(kMotorCtrlChannel, &LcmMotorSdkAdapter::on_motor_ctrl, this);
+  next_count_log_s_ = wall_seconds() + 1.0;
+  thread_ = std::thread([this] { run(); });
+}
+
+LcmMotorSdkAdapter::~LcmMotorSdkAdapter() {
+  running_.store(false);
+  if (thread_.joinable()) thread_.join();
+}
+
+void LcmMotorSdkAdapter::on_cycle(const CycleRecord& record) {
+  robot_time_s_.store(record.state.time_s, std::memory_order_relaxed);
+  telemetry_.try_push(Telemetry{record, source_.status()});
+}
+
+MotorCtrlRejections LcmMotorSdkAdapter::rejections() const {
+  MotorCtrlRejections r;
+  r.wrong_fingerprint = wrong_fingerprint_.load(std::memory_order_relaxed);
+  r.truncated = truncated_.load(std::memory_order_relaxed);
+  r.oversized = oversized_.load(std::memory_order_relaxed);
+  r.non_finite = source_.counters().frames_non_finite;
+  return r;
+}
+
+void LcmMotorSdkAdapter::run() {
+  while (running_.load()) {
+    control_lcm_->handleTimeout(1);
+    while (std::optional<Telemetry> telemetry = telemetry_.try_pop()) {
+      publish(*telemetry);
+      log_changes(telemetry->status);
+    }
+    log_counts_once_per_second();
+  }
+  while (std::optional<Telemetry> telemetry = telemetry_.try_pop()) publish(*telemetry);
+}
+
+void LcmMotorSdkAdapter::on_motor_ctrl(const lcm::ReceiveBuffer* buffer, const std::string&) {
+  JointCommand frame;
+  switch (decode_motor_ctrl(buffer->data, buffer->data_size, frame)) {
+    case MotorCtrlDecode::Ok:
+      source_.mailbox().push(frame, robot_time_s_.load(std::memory_order_relaxed));
+      return;
+    case MotorCtrlDecode::WrongFingerprint: wrong_fingerprint_.fetch_add(1, std::memory_order_relaxed); return;
+    case MotorCtrlDecode::Truncated: truncated_.fetch_add(1, std::memory_order_relaxed); return;
+    case MotorCtrlDecode::Oversized: oversized_.fetch_add(1, std::memory_order_relaxed); return;
+  }
+}
+
+void LcmMotorSdkAdapter::publish(const Telemetry& telemetry) {
+  const CycleRecord& record = telemetry.record;
+  const bool motor_mode = telemetry.status.motor_mode;
+  if (motor_mode) {
+    publish_message(*control_lcm_, kSpiDataChannel, make_spi_data(record.state));
+    publish_message(*control_lcm_, kMotorCtrlStateChannel, make_motor_ctrl_state(telemetry.status));
+  }
+  if (motor_mode || record.tick % kIdleFeedbackDecimation == 0) {
+    publish_message(*control_lcm_, kLegControlDataChannel, make_leg_control_data(record.state, record.command));
+    publish_message(*estimator_lcm_, kStateEstimatorChannel, make_state_estimator(record.state));
+  }
+}
+
+void LcmMotorSdkAdapter::log_changes(const MotorSdkStatus& status) {
+  if (!refusal_logged_ && source_.last_refusal_holder() != nullptr) {
+    refusal_logged_ = true;
+    std::fprintf(log_, "motor sdk: motor_ctrl refused: %s has the robot (motor mode is entered only from "
+                 "Off or PureDamper: mc.startup off or damper)\n", source_.last_refusal_holder());
+  }
+  const bool was_lost = last_status_.err_flag & kMotorSdkCommandLost;
+  const bool is_lost = status.err_flag & kMotorSdkCommandLost;
+  if (status.motor_mode && !last_status_.motor_mode) {
+    std::fprintf(log_, "motor sdk: motor mode entered; err_flag 0x02 until all-zero frames activate it\n");
+  } else if (is_lost && !was_lost) {
+    std::fprintf(log_, "motor sdk: err_flag 0x02: communication lost over 500 ms; damping, the robot lies "
+                 "down; send all-zero frames to recover\n");
+  } else if (!is_lost && was_lost && status.motor_mode) {
+    std::fprintf(log_, "motor sdk: err_flag bit 1 cleared by all-zero frames; commands are executed\n");
+  }
+  std::fflush(log_);
+  last_status_ = status;
+}
+
+void LcmMotorSdkAdapter::log_counts_once_per_second() {
+  const double now_s = wall_seconds();
+  if (now_s < next_count_log_s_) return;
+  next_count_log_s_ = now_s + 1.0;
+  const Counts now{source_.counters(), rejections()};
+  const Counts& before = logged_counts_;
+  std::string text;
+  describe(text, now.rejected.wrong_fingerprint - before.rejected.wrong_fingerprint, "with a wrong fingerprint");
+  describe(text, now.rejected.truncated - before.rejected.truncated, "truncated");
+  describe(text, now.rejected.oversized - before.rejected.oversized, "oversized");
+  describe(text, now.rejected.non_finite - before.rejected.non_finite, "with NaN/Inf");
+  describe(text, now.source.frames_dropped - before.source.frames_dropped, "dropped (mailbox full)");
+  if (!text.empty()) std::fprintf(log_, "motor sdk: motor_ctrl packets rejected in the last second: %s\n", text.c_str());
+  text.clear();
+  describe(text, now.source.clamped_gains - before.source.clamped_gains, "kp/kd");
+  describe(text, now.source.clamped_velocities - before.source.clamped_velocities, "qd_des");
+  describe(text, now.source.clamped_torques - before.source.clamped_torques, "tau_des");
+  describe(text, now.source.clamped_positions - before.source.clamped_positions, "q_des at a joint limit");
+  describe(text, now.source.clamped_jumps - before.source.clamped_jumps, "q_des jumps");
+  describe(text, now.source.frames_ignored_while_lost - before.source.frames_ignored_while_lost,
+           "non-zero frames ignored while err_flag bit 1 is set");
+  if (!text.empty()) std::fprintf(log_, "motor sdk: joint values clamped in the last second: %s\n", text.c_str());
+  std::fflush(log_);
+  logged_counts_ = now;
+}
+
+void LcmMotorSdkAdapter::finish(std::FILE* out) {
+  running_.store(false);
+  if (thread_.joinable()) thread_.join();
+  const MotorSdkCounters c = source_.counters();
+  const MotorCtrlRejections r = rejections();
+  using ull = unsigned long long;
+  std::fprintf(out,
+               "motor sdk: motor mode %s, err_flag 0x%02x; frames %llu accepted, %llu refused, %llu ignored while "
+               "lost; rejected %llu wrong fingerprint, %llu truncated, %llu oversized, %llu non-finite, %llu "
+               "mailbox full; clamped %llu kp/kd, %llu qd_des, %llu tau_des, %llu q_des limits, %llu jumps; "
+               "%llu communication losses; %llu telemetry records dropped\n",
+               last_status_.motor_mode ? "yes" : "no", static_cast<unsigned>(last_status_.err_flag),
+               ull(c.frames_accepted), ull(c.frames_refused), ull(c.frames_ignored_while_lost),
+               ull(r.wrong_fingerprint), ull(r.truncated), ull(r.oversized), ull(r.non_finite), ull(c.frames_dropped),
+               ull(c.clamped_gains), ull(c.clamped_velocities), ull(c.clamped_torques), ull(c.clamped_positions),
+               ull(c.clamped_jumps), ull(c.commands_lost), ull(telemetry_dropped()));
+  std::fflush(out);
+}
+
+}  // namespace cerebellum

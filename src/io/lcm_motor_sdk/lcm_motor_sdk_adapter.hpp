@@ -1,0 +1,87 @@
+// The motor SDK on LCM: one thread receives motor_ctrl (raw, decoded here so malformed packets
+// are counted), stamps each frame with robot time and hands it to the MotorSdkSource; the same
+// thread publishes spi_data, motor_ctrl_state, leg_control_data and state_estimator from the
+// cycle records the loop thread copies into a ring. Nothing here runs inside the tick but the copy.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <cstdio>
+#include <memory>
+#include <string>
+#include <thread>
+
+#include "app/control_loop.hpp"
+#include "core/spsc_ring.hpp"
+#include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
+#include "modes/motor_sdk/motor_sdk_source.hpp"
+
+namespace lcm {
+class LCM;
+struct ReceiveBuffer;
+}  // namespace lcm
+
+namespace cerebellum {
+
+// motor_ctrl packets that never became a frame
+struct MotorCtrlRejections {
+  std::uint64_t wrong_fingerprint = 0;
+  std::uint64_t truncated = 0;
+  std::uint64_t oversized = 0;
+  std::uint64_t non_finite = 0;
+};
+
+class LcmMotorSdkAdapter final : public CycleObserver {
+ public:
+  // opens both LCM urls and starts the thread; throws std::runtime_error naming a url LCM cannot
+  // open. log: where warnings go (never written from the loop thread)
+  LcmMotorSdkAdapter(const MotorSdkConfig& config, std::FILE* log);
+  ~LcmMotorSdkAdapter() override;
+  LcmMotorSdkAdapter(const LcmMotorSdkAdapter&) = delete;
+  LcmMotorSdkAdapter& operator=(const LcmMotorSdkAdapter&) = delete;
+
+  // register with SourceArbiter::add_low_level_source
+  MotorSdkSource& source() { return source_; }
+  // loop thread: copies the record and the source's status, nothing else
+  void on_cycle(const CycleRecord& record) override;
+
+  // stops the thread (publishing what is queued) and prints one summary line to out
+  void finish(std::FILE* out);
+  MotorCtrlRejections rejections() const;
+  std::uint64_t telemetry_dropped() const { return telemetry_.dropped(); }
+
+ private:
+  struct Telemetry {
+    CycleRecord record;
+    MotorSdkStatus status;
+  };
+  struct Counts {
+    MotorSdkCounters source;
+    MotorCtrlRejections rejected;
+  };
+
+  void run();
+  void on_motor_ctrl(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+  void publish(const Telemetry& telemetry);
+  void log_changes(const MotorSdkStatus& status);
+  void log_counts_once_per_second();
+
+  MotorSdkSource source_;
+  std::FILE* log_;
+  std::unique_ptr<lcm::LCM> control_lcm_;
+  std::unique_ptr<lcm::LCM> estimator_lcm_;
+  SpscRing<Telemetry, 64> telemetry_;
+  std::atomic<double> robot_time_s_{0.0};  // of the newest cycle record, stamps received frames
+  std::atomic<std::uint64_t> wrong_fingerprint_{0};
+  std::atomic<std::uint64_t> truncated_{0};
+  std::atomic<std::uint64_t> oversized_{0};
+  std::atomic<bool> running_{true};
+  // adapter thread only
+  MotorSdkStatus last_status_;
+  bool refusal_logged_ = false;
+  Counts logged_counts_;
+  double next_count_log_s_ = 0.0;  // wall clock seconds since start
+  std::thread thread_;
+};
+
+}  // namespace cerebellum

@@ -1,0 +1,82 @@
+// Gait schedules against the firmware's table.
+#include "control/locomotion/gait.hpp"
+
+#include <gtest/gtest.h>
+
+namespace cerebellum {
+namespace {
+
+TEST(Gait, TableFactsForEachGait) {
+  struct Row {
+    int id, period, stance;
+    std::array<int, 4> offsets;
+  };
+  for (const Row& r : {Row{27, 20, 12, {0, 10, 10, 0}}, Row{3, 12, 6, {0, 6, 6, 0}}, Row{10, 10, 4, {0, 5, 5, 0}},
+                       Row{4, 12, 6, {0, 6, 6, 0}}, Row{2, 10, 4, {0, 0, 0, 0}}, Row{7, 12, 8, {6, 6, 0, 0}},
+                       Row{1, 10, 10, {0, 0, 0, 0}}, Row{31, 10, 10, {0, 0, 0, 0}}}) {
+    const auto p = gait_pattern(r.id);
+    ASSERT_TRUE(p.has_value()) << r.id;
+    EXPECT_EQ(p->period_segments, r.period) << r.id;
+    EXPECT_EQ(p->stance[0], r.stance) << r.id;
+    EXPECT_EQ(p->offsets, r.offsets) << r.id;
+  }
+  EXPECT_FALSE(gait_pattern(5).has_value());
+  EXPECT_FALSE(gait_pattern(110).has_value());
+}
+
+TEST(Gait, VelocityLimitsOfTheReference) {
+  const auto flying = gait_pattern(10);
+  EXPECT_EQ(flying->velocity_max[0], 1.6);
+  EXPECT_EQ(flying->velocity_min[0], -1.2);
+  EXPECT_EQ(flying->velocity_max[2], 2.5);
+  EXPECT_EQ(gait_pattern(27)->velocity_max[1], 0.2);
+}
+
+TEST(Gait, VariableTrotShortensItsCycleAsSpeedGrows) {
+  EXPECT_EQ(variable_trot_pattern(0.0).period_segments, 24);
+  EXPECT_EQ(variable_trot_pattern(0.0).stance[0], 16);
+  EXPECT_EQ(variable_trot_pattern(0.45).period_segments, 20);
+  EXPECT_EQ(variable_trot_pattern(1.6).period_segments, 10);
+  EXPECT_EQ(variable_trot_pattern(1.6).stance[0], 5);
+  EXPECT_EQ(variable_trot_pattern(-1.0).period_segments, 14);
+}
+
+TEST(Gait, TrotSchedulePairsDiagonalLegs) {
+  GaitScheduler scheduler(0.03);
+  scheduler.set_pattern(*gait_pattern(3));
+  const auto table = scheduler.horizon_contacts<12>();
+  for (int k = 0; k < 12; ++k) {
+    EXPECT_EQ(table[k][0], table[k][3]) << k;  // FR with RL
+    EXPECT_EQ(table[k][1], table[k][2]) << k;  // FL with RR
+    EXPECT_NE(table[k][0], table[k][1]) << k;
+    EXPECT_EQ(table[k][0], k < 6) << k;
+  }
+}
+
+TEST(Gait, PhasesAdvanceThroughStanceAndSwing) {
+  GaitScheduler scheduler(0.03);
+  scheduler.set_pattern(*gait_pattern(3));  // 6 segments stance, 6 swing
+  scheduler.advance(0.09);                  // 3 segments
+  LegPhase fr = scheduler.leg_phase(0);
+  EXPECT_TRUE(fr.stance);
+  EXPECT_NEAR(fr.stance_phase, 0.5, 1e-9);
+  EXPECT_NEAR(fr.stance_duration_s, 0.18, 1e-12);
+  const LegPhase fl = scheduler.leg_phase(1);
+  EXPECT_FALSE(fl.stance);
+  EXPECT_NEAR(fl.swing_phase, 0.5, 1e-9);
+  scheduler.advance(0.36);  // a whole cycle later: the same
+  fr = scheduler.leg_phase(0);
+  EXPECT_NEAR(fr.stance_phase, 0.5, 1e-9);
+}
+
+TEST(Gait, SwitchingPatternKeepsTheCyclePhase) {
+  GaitScheduler scheduler(0.03);
+  scheduler.set_pattern(*gait_pattern(27));
+  scheduler.advance(0.15);  // 5 of 20 segments
+  EXPECT_NEAR(scheduler.cycle_phase(), 0.25, 1e-9);
+  scheduler.set_pattern(*gait_pattern(3));
+  EXPECT_NEAR(scheduler.cycle_phase(), 0.25, 1e-9);
+}
+
+}  // namespace
+}  // namespace cerebellum

@@ -1,0 +1,55 @@
+// Swing trajectories and footholds against hand-computed values and finite differences.
+#include <gtest/gtest.h>
+
+#include "control/locomotion/foothold.hpp"
+#include "control/locomotion/swing_trajectory.hpp"
+
+namespace cerebellum {
+namespace {
+
+TEST(SwingTrajectory, StartsEndsAndPeaksWhereItShould) {
+  const Eigen::Vector3d start(0.0, 0.1, 0.02), end(0.2, 0.12, 0.02);
+  const SwingPoint a = swing_point(start, end, 0.06, 0.0, 0.2);
+  const SwingPoint mid = swing_point(start, end, 0.06, 0.5, 0.2);
+  const SwingPoint b = swing_point(start, end, 0.06, 1.0, 0.2);
+  EXPECT_TRUE(a.position.isApprox(start));
+  EXPECT_TRUE(b.position.isApprox(end));
+  EXPECT_NEAR(mid.position.z(), 0.08, 1e-12);
+  EXPECT_NEAR(mid.position.x(), 0.1, 1e-12);
+  EXPECT_LT(a.velocity.norm(), 1e-12);  // lift-off and touchdown at rest
+  EXPECT_LT(b.velocity.norm(), 1e-12);
+  EXPECT_NEAR(mid.velocity.z(), 0.0, 1e-12);
+}
+
+TEST(SwingTrajectory, VelocityIsTheTimeDerivativeOfPosition) {
+  const Eigen::Vector3d start(0.0, 0.1, 0.0), end(0.25, 0.05, 0.01);
+  const double duration = 0.18, h = 1e-6;
+  for (double s : {0.1, 0.3, 0.49, 0.51, 0.7, 0.9}) {
+    const Eigen::Vector3d numeric = (swing_point(start, end, 0.05, s + h, duration).position -
+                                     swing_point(start, end, 0.05, s - h, duration).position) /
+                                    (2 * h * duration);
+    EXPECT_LT((numeric - swing_point(start, end, 0.05, s, duration).velocity).norm(), 1e-5) << s;
+  }
+}
+
+TEST(Foothold, RaibertTermsAddUp) {
+  FootholdConfig config;
+  const Eigen::Vector3d hip(1.0, 0.2, 0.0);
+  // no yaw: 0.5 * 0.2 s * 0.5 m/s + 0.1 * (0.5 - 0.4) = 0.05 + 0.01
+  Eigen::Vector3d p = raibert_foothold(hip, {0.5, 0.0, 0.0}, {0.4, 0.0, 0.0}, 0.0, 0.2, 0.25, config);
+  EXPECT_NEAR(p.x(), 1.06, 1e-12);
+  EXPECT_NEAR(p.y(), 0.2, 1e-12);
+  // turning left while moving forward: the centrifugal term moves the foot outwards (-y)
+  p = raibert_foothold(hip, {0.5, 0.0, 0.0}, {0.5, 0.0, 0.0}, 1.0, 0.2, 0.25, config);
+  EXPECT_NEAR(p.y(), 0.2 - 0.5 * std::sqrt(0.25 / 9.81) * 0.5, 1e-12);
+}
+
+TEST(Foothold, OffsetIsClamped) {
+  FootholdConfig config;
+  const Eigen::Vector3d p = raibert_foothold(Eigen::Vector3d::Zero(), {10.0, -10.0, 0}, {0, 0, 0}, 0.0, 0.3, 0.25, config);
+  EXPECT_DOUBLE_EQ(p.x(), 0.3);
+  EXPECT_DOUBLE_EQ(p.y(), -0.3);
+}
+
+}  // namespace
+}  // namespace cerebellum

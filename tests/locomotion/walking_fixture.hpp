@@ -1,0 +1,100 @@
+// A simulated robot that stands up, then walks with the locomotion controller on its own
+// estimate (BodyStateEstimator fed with the gait's contact schedule), in lockstep time.
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "app/control_loop.hpp"
+#include "backend/mujoco_backend.hpp"
+#include "control/locomotion/locomotion_controller.hpp"
+#include "control/qp/goldfarb_idnani_solver.hpp"
+#include "control/stand_up_controller.hpp"
+#include "estimation/body_state_estimator.hpp"
+
+namespace cerebellum::testing {
+
+class StandThenWalk final : public MotionController {
+ public:
+  StandThenWalk(BodyStateEstimator& estimator, std::unique_ptr<qp::QpSolver> solver)
+      : stand_(default_stand_up_config()), walk_(LocomotionConfig{}, std::move(solver)), estimator_(estimator) {}
+
+  void compute(const RobotState& state, JointCommand& command) override {
+    if (state.time_s < kStandSeconds) {
+      stand_.compute(state, command);
+      return;
+    }
+    if (!walking_) {
+      walking_ = true;
+      walk_.set_command(command_);
+      walk_.reset(state);
+    }
+    walk_.compute(state, command);
+    ContactSchedule schedule{};
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+      const LegPhase phase = walk_.scheduler().leg_phase(leg);
+      schedule[leg] = {phase.stance ? 1.0 : 0.0, phase.stance_phase};
+    }
+    estimator_.set_contact_schedule(schedule);
+  }
+
+  bool set(const LocomotionCommand& command) {
+    command_ = command;
+    return !walking_ || walk_.set_command(command);
+  }
+  LocomotionController& walker() { return walk_; }
+
+  static constexpr double kStandSeconds = 3.0;
+
+ private:
+  StandUpController stand_;
+  LocomotionController walk_;
+  BodyStateEstimator& estimator_;
+  LocomotionCommand command_;
+  bool walking_ = false;
+};
+
+inline LocomotionCommand walk_command(int gait, double vx, double vy = 0.0, double yaw_rate = 0.0) {
+  LocomotionCommand command;
+  command.gait = *gait_pattern(gait);
+  command.velocity = {vx, vy, yaw_rate};
+  return command;
+}
+
+struct WalkingSim {
+  explicit WalkingSim(std::unique_ptr<qp::QpSolver> solver = std::make_unique<qp::GoldfarbIdnaniSolver>())
+      : backend(config()), controller(estimator, std::move(solver)),
+        loop(backend, estimator, controller, GuardLimits{}, 0.002) {}
+
+  static MujocoBackendConfig config() {
+    MujocoBackendConfig c;
+    c.model_path = std::string(CEREBELLUM_MODEL_DIR) + "/cyberdog2.xml";
+    return c;
+  }
+  // run until robot time t; fails the callback's expectations as it goes
+  template <typename EachTick>
+  void run_until(double t, EachTick&& each_tick) {
+    while (backend.time_s() < t - 1e-9) each_tick(loop.tick());
+  }
+  void run_until(double t) {
+    run_until(t, [](const CycleRecord&) {});
+  }
+  double yaw_truth() const {
+    const GroundTruth g = backend.ground_truth();
+    return std::atan2(2 * (g.quat[0] * g.quat[3] + g.quat[1] * g.quat[2]),
+                      1 - 2 * (g.quat[2] * g.quat[2] + g.quat[3] * g.quat[3]));
+  }
+  bool upright() const {
+    const GroundTruth g = backend.ground_truth();
+    // the body's z axis within ~30 deg of vertical and the trunk well above the ground
+    const double up_z = 1 - 2 * (g.quat[1] * g.quat[1] + g.quat[2] * g.quat[2]);
+    return up_z > std::cos(0.5) && g.position[2] > 0.17;
+  }
+
+  MujocoBackend backend;
+  BodyStateEstimator estimator;
+  StandThenWalk controller;
+  ControlLoop loop;
+};
+
+}  // namespace cerebellum::testing

@@ -1,0 +1,119 @@
+// Locomotion end to end in lockstep simulation, on the robot's own state estimate.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "walking_fixture.hpp"
+
+namespace cerebellum {
+namespace {
+
+using testing::StandThenWalk;
+using testing::walk_command;
+using testing::WalkingSim;
+
+constexpr double kStart = StandThenWalk::kStandSeconds;
+
+double unwrap_delta(double from, double to) { return std::remainder(to - from, 2 * M_PI); }
+
+TEST(Walking, TrotsInPlaceForTenSecondsAtTheCommandedHeight) {
+  WalkingSim sim;
+  sim.controller.set(walk_command(3, 0.0));
+  double height_sum = 0;
+  int samples = 0;
+  bool upright = true;
+  sim.run_until(kStart);
+  sim.run_until(kStart + 10.0, [&](const CycleRecord& record) {
+    upright &= sim.upright();
+    if (record.state.time_s > kStart + 5.0) {
+      height_sum += sim.backend.ground_truth().position[2];
+      ++samples;
+    }
+  });
+  EXPECT_TRUE(upright);
+  EXPECT_NEAR(height_sum / samples, 0.25, 0.015);
+  EXPECT_EQ(sim.controller.walker().telemetry().mpc_failures, 0u);
+  EXPECT_GT(sim.controller.walker().telemetry().mpc_solves, 300u);
+}
+
+TEST(Walking, WalksForwardHalfAMetrePerSecond) {
+  WalkingSim sim;
+  sim.controller.set(walk_command(3, 0.5));
+  sim.run_until(kStart);
+  const double x0 = sim.backend.ground_truth().position[0];
+  const double yaw0 = sim.yaw_truth();
+  bool upright = true;
+  sim.run_until(kStart + 5.0, [&](const CycleRecord&) { upright &= sim.upright(); });
+  EXPECT_TRUE(upright);
+  EXPECT_NEAR(sim.backend.ground_truth().position[0] - x0, 2.5, 0.15 * 2.5);
+  EXPECT_LT(std::abs(unwrap_delta(yaw0, sim.yaw_truth())), 0.1);
+}
+
+TEST(Walking, TurnsAtOneRadianPerSecond) {
+  WalkingSim sim;
+  sim.controller.set(walk_command(3, 0.0, 0.0, 1.0));
+  sim.run_until(kStart);
+  double yaw = sim.yaw_truth();
+  double turned = 0;
+  bool upright = true;
+  sim.run_until(kStart + 3.0, [&](const CycleRecord&) {
+    const double now = sim.yaw_truth();
+    turned += unwrap_delta(yaw, now);
+    yaw = now;
+    upright &= sim.upright();
+  });
+  EXPECT_TRUE(upright);
+  EXPECT_NEAR(turned, 3.0, 0.15 * 3.0);
+}
+
+TEST(Walking, SwitchesGaitsWhileMovingWithoutFalling) {
+  WalkingSim sim;
+  sim.controller.set(walk_command(27, 0.4));
+  bool upright = true;
+  auto check = [&](const CycleRecord&) { upright &= sim.upright(); };
+  sim.run_until(kStart);
+  sim.run_until(kStart + 3.0, check);
+  sim.controller.set(walk_command(3, 0.6));
+  sim.run_until(kStart + 6.0, check);
+  sim.controller.set(walk_command(10, 0.8));
+  sim.run_until(kStart + 9.0, check);
+  sim.controller.set(walk_command(1, 0.0));
+  sim.run_until(kStart + 12.0, check);
+  EXPECT_TRUE(upright);
+  EXPECT_LT(std::abs(sim.backend.ground_truth().velocity_world[0]), 0.1);
+}
+
+TEST(Walking, VelocityBeyondTheGaitsLimitIsClampedAndNanIsRefused) {
+  WalkingSim sim;
+  sim.controller.set(walk_command(27, 0.3));
+  sim.run_until(kStart + 1.0);
+  EXPECT_TRUE(sim.controller.set(walk_command(27, 5.0)));  // slow trot: 0.6 m/s at most
+  EXPECT_FALSE(sim.controller.set(walk_command(27, std::nan(""))));
+  sim.run_until(kStart + 6.0);
+  EXPECT_NEAR(sim.controller.walker().ramped_velocity().x(), 0.6, 1e-9);
+  EXPECT_NEAR(sim.backend.ground_truth().velocity_world[0], 0.6, 0.15);
+  EXPECT_TRUE(sim.upright());
+}
+
+// a solver that always fails, to prove the controller notices
+class FailingSolver final : public qp::QpSolver {
+ public:
+  qp::QpStatus solve(const qp::QpProblem&, qp::QpSolution& solution) override {
+    solution.status = qp::QpStatus::Infeasible;
+    return solution.status;
+  }
+  std::string_view name() const override { return "failing"; }
+};
+
+TEST(Walking, RepeatedSolverFailureMakesTheControllerUnhealthy) {
+  WalkingSim sim(std::make_unique<FailingSolver>());
+  sim.controller.set(walk_command(3, 0.0));
+  sim.run_until(kStart + 0.05);
+  EXPECT_TRUE(sim.controller.walker().healthy());
+  sim.run_until(kStart + 0.2);
+  EXPECT_FALSE(sim.controller.walker().healthy());
+  EXPECT_GE(sim.controller.walker().telemetry().mpc_failures, 3u);
+}
+
+}  // namespace
+}  // namespace cerebellum

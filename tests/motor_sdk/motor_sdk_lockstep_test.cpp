@@ -1,0 +1,123 @@
+// The motor SDK in the whole MC, in lockstep on the simulated robot: a client written like the
+// official example activates motor mode, lays the legs out and stands the robot up; a client that
+// dies makes the robot lie down, and only all-zero frames bring the interface back.
+#include <gtest/gtest.h>
+
+#include "app/mc.hpp"
+#include "core/robot_model.hpp"
+#include "modes/motor_sdk/motor_sdk_source.hpp"
+
+namespace cerebellum {
+namespace {
+
+// the official example's logic in SDK convention: all-zero while err_flag bit1 is set, then from
+// the current pose to lying over 1500 ticks, to standing over 1500 ticks, kp 60, kd 2
+class ExampleClient {
+ public:
+  JointCommand next(const RobotState& feedback, std::uint16_t err_flag) {
+    JointCommand frame;
+    if (err_flag & kMotorSdkCommandLost) {
+      start_q_ = feedback.q;
+      tick_ = 0;
+      return frame;
+    }
+    const double t = std::min(2.0, tick_++ / 1500.0);
+    for (std::size_t i = 0; i < kNumJoints; ++i) {
+      const double lying = robot::kLyingPose[i % 3], standing = robot::kStandPose[i % 3];
+      frame.q_des[i] = t < 1.0 ? start_q_[i] * (1.0 - t) + lying * t : lying * (2.0 - t) + standing * (t - 1.0);
+      frame.kp[i] = 60.0;
+      frame.kd[i] = 2.0;
+    }
+    return frame;
+  }
+
+ private:
+  JointArray<double> start_q_{};
+  long tick_ = 0;
+};
+
+class MotorSdkLockstep : public ::testing::Test {
+ protected:
+  MotorSdkLockstep() : mc_(damper_config()), source_(MotorSdkParameters{}) {
+    mc_.arbiter().add_low_level_source(source_);
+  }
+
+  static McConfig damper_config() {
+    McConfig config = default_config();
+    config.startup = Startup::Damper;
+    return config;
+  }
+
+  // one tick; the client's frame (if any) arrives stamped with the robot time of the last record
+  void tick(ExampleClient* client) {
+    const RobotState& feedback = mc_.loop().last_cycle().state;
+    if (client != nullptr) {
+      ASSERT_EQ(source_.mailbox().push(client->next(feedback, source_.status().err_flag), feedback.time_s),
+                PushResult::Accepted);
+    }
+    mc_.loop().tick();
+  }
+  void run(double seconds, ExampleClient* client) {
+    const int ticks = static_cast<int>(seconds / mc_.loop().period_s() + 0.5);
+    for (int k = 0; k < ticks; ++k) tick(client);
+  }
+  double height_m() { return mc_.backend().ground_truth().position[2]; }
+  std::uint16_t err_flag() const { return source_.status().err_flag; }
+
+  Mc mc_;
+  MotorSdkSource source_;
+};
+
+TEST_F(MotorSdkLockstep, ExampleClientStandsTheRobotUpAndADeadClientLetsItLieDown) {
+  // the robot drops, settles in PureDamper; nothing latched yet
+  run(0.5, nullptr);
+  EXPECT_EQ(mc_.arbiter().latched(), nullptr);
+
+  ExampleClient client;
+  run(1.0, &client);
+  EXPECT_EQ(mc_.arbiter().latched(), &source_);
+  EXPECT_EQ(err_flag(), kMotorSdkCommandLost);  // still activating: bit1 holds for 2 s
+  run(1.1, &client);
+  EXPECT_EQ(err_flag(), 0);
+  const double lying_height_m = height_m();
+  EXPECT_LT(lying_height_m, 0.17);
+
+  // 3 s to the lying pose, 3 s up, 1 s of holding
+  run(7.0, &client);
+  EXPECT_EQ(err_flag(), 0);
+  EXPECT_GE(height_m(), 0.2);
+  EXPECT_EQ(source_.counters().clamped_jumps, 0u);
+
+  // the client dies: bit1 after 500 ms, damping, the robot is down within 3 s
+  run(0.6, nullptr);
+  EXPECT_EQ(err_flag() & kMotorSdkCommandLost, kMotorSdkCommandLost);
+  run(3.0, nullptr);
+  EXPECT_LT(height_m(), 0.17);
+  EXPECT_EQ(source_.counters().commands_lost, 1u);
+
+  // a new client: zero frames clear bit1 (it has been set for more than 2 s), then it stands again
+  ExampleClient second;
+  run(0.1, &second);
+  EXPECT_EQ(err_flag(), 0);
+  run(7.0, &second);
+  EXPECT_EQ(err_flag(), 0);
+  EXPECT_GE(height_m(), 0.2);
+}
+
+TEST_F(MotorSdkLockstep, StandingRobotIsNotHandedOver) {
+  McConfig config = default_config();
+  config.startup = Startup::Stand;
+  Mc standing(config);
+  MotorSdkSource source{MotorSdkParameters{}};
+  standing.arbiter().add_low_level_source(source);
+  for (int k = 0; k < 100; ++k) {
+    ASSERT_EQ(source.mailbox().push(JointCommand{}, standing.loop().last_cycle().state.time_s), PushResult::Accepted);
+    standing.loop().tick();
+  }
+  EXPECT_EQ(standing.arbiter().latched(), nullptr);
+  EXPECT_FALSE(source.status().motor_mode);
+  EXPECT_EQ(source.counters().frames_refused, 100u);
+}
+
+}  // namespace
+}  // namespace cerebellum

@@ -1,0 +1,182 @@
+// The translation between lowlevel.h frames and the MC's value types.
+#include "io/shm_lowlevel/shm_codec.hpp"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstring>
+#include <limits>
+
+namespace cerebellum {
+namespace {
+
+TEST(ShmCodec, JointStateFlagsPackEnableTemperatureAndVoltage) {
+  // bit0 enabled; byte 1: 25 deg C + 40 = 65 = 0x41; byte 2: 24 V = 0x18
+  EXPECT_EQ(shm_joint_state_flags(25.0), 0x00184101);
+  EXPECT_EQ(shm_joint_state_flags(24.6), 0x00184101);  // rounded to whole degrees
+  EXPECT_EQ(shm_joint_state_flags(-40.0), 0x00180001);
+  EXPECT_EQ(shm_joint_state_flags(-60.0), 0x00180001);  // below the range: clamped
+  EXPECT_EQ(shm_joint_state_flags(215.0), 0x0018FF01);
+  EXPECT_EQ(shm_joint_state_flags(400.0), 0x0018FF01);
+  EXPECT_EQ(shm_joint_state_flags(std::nan("")), 0x00180001);
+}
+
+SensorFrame numbered_frame() {
+  SensorFrame frame;
+  frame.time_s = 1.234;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    frame.q[i] = 0.1 * static_cast<double>(i) - 0.5;
+    frame.qd[i] = 2.0 + static_cast<double>(i);
+    frame.tau[i] = -1.0 - 0.25 * static_cast<double>(i);
+    frame.temperature_c[i] = 30.0 + static_cast<double>(i);
+  }
+  frame.imu_quat = {0.9, 0.1, -0.2, 0.3};
+  frame.imu_gyro = {0.01, -0.02, 0.03};
+  frame.imu_accel = {0.5, -0.4, 9.7};
+  return frame;
+}
+
+TEST(ShmCodec, LegsKeepTheSdkConventionAndZeroTheFoot) {
+  const SensorFrame frame = numbered_frame();
+  leg_state_t legs[kNumLegs];
+  std::memset(legs, 0x5a, sizeof(legs));  // garbage that must be overwritten, foot included
+  encode_shm_legs(frame, legs);
+  const joint_state_t* joints[kNumLegs][3];
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    joints[leg][0] = &legs[leg].abad;
+    joints[leg][1] = &legs[leg].hip;
+    joints[leg][2] = &legs[leg].knee;
+    EXPECT_EQ(legs[leg].foot.flags, 0);
+    EXPECT_EQ(legs[leg].foot.p, 0.0f);
+    EXPECT_EQ(legs[leg].foot.v, 0.0f);
+    EXPECT_EQ(legs[leg].foot.t, 0.0f);
+  }
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    const joint_state_t& j = *joints[i / 3][i % 3];
+    // no sign flip: the frame's numbers, rounded to float
+    EXPECT_EQ(j.p, static_cast<float>(0.1 * static_cast<double>(i) - 0.5)) << i;
+    EXPECT_EQ(j.v, static_cast<float>(2.0 + static_cast<double>(i))) << i;
+    EXPECT_EQ(j.t, static_cast<float>(-1.0 - 0.25 * static_cast<double>(i))) << i;
+    EXPECT_EQ((j.flags >> 8) & 0xff, 70 + static_cast<int>(i)) << i;  // 30 + i deg C, + 40
+  }
+  // FRONT_LEFT is the second leg of the array, as in the project's FR, FL, RR, RL order
+  EXPECT_EQ(legs[FRONT_LEFT].hip.p, static_cast<float>(frame.q[joint_index(Leg::FL, Joint::Hip)]));
+  EXPECT_EQ(legs[BACK_LEFT].knee.p, static_cast<float>(frame.q[joint_index(Leg::RL, Joint::Knee)]));
+}
+
+TEST(ShmCodec, ImuCarriesRobotTimeInNanosecondsAndWxyz) {
+  const SensorFrame frame = numbered_frame();
+  nav_imu_t imu{};
+  encode_shm_imu(frame, imu);
+  EXPECT_EQ(imu.timestamp, 1234000000u);
+  EXPECT_EQ(imu.q[0], 0.9f);
+  EXPECT_EQ(imu.q[1], 0.1f);
+  EXPECT_EQ(imu.q[2], -0.2f);
+  EXPECT_EQ(imu.q[3], 0.3f);
+  EXPECT_EQ(imu.gyro[1], -0.02f);
+  EXPECT_EQ(imu.acc[2], 9.7f);
+  EXPECT_EQ(shm_timestamp_ns(0.001), 1000000u);
+  EXPECT_EQ(shm_timestamp_ns(-1.0), 0u);
+}
+
+// every joint at p_des = index / 10, gains 60 / 2, t_ff = -index / 100
+void fill_command(leg_control_t (&legs)[kNumLegs]) {
+  std::memset(legs, 0, sizeof(legs));
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    joint_control_t* joints[3] = {&legs[leg].abad, &legs[leg].hip, &legs[leg].knee};
+    for (std::size_t j = 0; j < 3; ++j) {
+      const auto i = static_cast<float>(3 * leg + j);
+      joints[j]->p_des = i / 10.0f;
+      joints[j]->v_des = 0.5f;
+      joints[j]->kp = 60.0f;
+      joints[j]->kd = 2.0f;
+      joints[j]->t_ff = -i / 100.0f;
+    }
+    legs[leg].flags = 1;
+  }
+}
+
+TEST(ShmCodec, ValidFrameBecomesTheCommandWithoutSignFlip) {
+  leg_control_t legs[kNumLegs];
+  fill_command(legs);
+  legs[BACK_RIGHT].foot.kp = std::numeric_limits<float>::quiet_NaN();  // the foot is not read
+  JointCommand command;
+  const ShmCommandCheck check = decode_shm_command(legs, ShmGainBounds{}, command);
+  ASSERT_TRUE(check.ok());
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    EXPECT_EQ(command.q_des[i], static_cast<float>(i) / 10.0f) << i;
+    EXPECT_EQ(command.qd_des[i], 0.5) << i;
+    EXPECT_EQ(command.kp[i], 60.0) << i;
+    EXPECT_EQ(command.kd[i], 2.0) << i;
+    EXPECT_EQ(command.tau_ff[i], -static_cast<float>(i) / 100.0f) << i;
+  }
+}
+
+struct BadValue {
+  std::size_t leg;
+  std::size_t joint;
+  ShmCommandField field;
+  float value;
+  ShmCommandFault fault;
+};
+
+class ShmCodecRejects : public ::testing::TestWithParam<BadValue> {};
+
+TEST_P(ShmCodecRejects, TheWholeFrameAndNamesTheFirstBadValue) {
+  const BadValue bad = GetParam();
+  leg_control_t legs[kNumLegs];
+  fill_command(legs);
+  joint_control_t* joints[3] = {&legs[bad.leg].abad, &legs[bad.leg].hip, &legs[bad.leg].knee};
+  joint_control_t& target = *joints[bad.joint];
+  switch (bad.field) {
+    case ShmCommandField::PDes: target.p_des = bad.value; break;
+    case ShmCommandField::VDes: target.v_des = bad.value; break;
+    case ShmCommandField::Kp: target.kp = bad.value; break;
+    case ShmCommandField::Kd: target.kd = bad.value; break;
+    case ShmCommandField::TFf: target.t_ff = bad.value; break;
+  }
+  JointCommand command;
+  command.kp.fill(-7.0);  // a marker: a rejected frame must not touch the command
+  const ShmCommandCheck check = decode_shm_command(legs, ShmGainBounds{200.0, 10.0}, command);
+  EXPECT_EQ(check.fault, bad.fault);
+  EXPECT_EQ(check.joint, 3 * bad.leg + bad.joint);
+  EXPECT_EQ(check.field, bad.field);
+  for (double kp : command.kp) EXPECT_EQ(kp, -7.0);
+}
+
+constexpr float kNaN = std::numeric_limits<float>::quiet_NaN();
+constexpr float kInf = std::numeric_limits<float>::infinity();
+
+INSTANTIATE_TEST_SUITE_P(
+    BadFrames, ShmCodecRejects,
+    ::testing::Values(BadValue{FRONT_LEFT, 1, ShmCommandField::PDes, kNaN, ShmCommandFault::NonFinite},
+                      BadValue{FRONT_RIGHT, 0, ShmCommandField::VDes, -kInf, ShmCommandFault::NonFinite},
+                      BadValue{BACK_RIGHT, 2, ShmCommandField::Kp, kInf, ShmCommandFault::NonFinite},
+                      BadValue{BACK_LEFT, 2, ShmCommandField::Kd, kNaN, ShmCommandFault::NonFinite},
+                      BadValue{BACK_LEFT, 0, ShmCommandField::TFf, kInf, ShmCommandFault::NonFinite},
+                      BadValue{FRONT_LEFT, 2, ShmCommandField::Kp, -1.0f, ShmCommandFault::GainOutOfRange},
+                      BadValue{FRONT_LEFT, 2, ShmCommandField::Kp, 200.5f, ShmCommandFault::GainOutOfRange},
+                      BadValue{FRONT_RIGHT, 1, ShmCommandField::Kp, 1e6f, ShmCommandFault::GainOutOfRange},
+                      BadValue{BACK_RIGHT, 1, ShmCommandField::Kd, -0.1f, ShmCommandFault::GainOutOfRange},
+                      BadValue{BACK_RIGHT, 0, ShmCommandField::Kd, 10.5f, ShmCommandFault::GainOutOfRange}));
+
+TEST(ShmCodec, GainsOnTheBoundsAreAccepted) {
+  leg_control_t legs[kNumLegs];
+  fill_command(legs);
+  legs[FRONT_RIGHT].abad.kp = 200.0f;
+  legs[FRONT_RIGHT].abad.kd = 10.0f;
+  legs[BACK_LEFT].knee.kp = 0.0f;
+  legs[BACK_LEFT].knee.kd = 0.0f;
+  JointCommand command;
+  EXPECT_TRUE(decode_shm_command(legs, ShmGainBounds{200.0, 10.0}, command).ok());
+  EXPECT_EQ(command.kp[0], 200.0);
+  EXPECT_EQ(command.kd[0], 10.0);
+}
+
+TEST(ShmCodec, FieldNames) {
+  EXPECT_STREQ(shm_command_field_name(ShmCommandField::PDes), "p_des");
+  EXPECT_STREQ(shm_command_field_name(ShmCommandField::TFf), "t_ff");
+}
+
+}  // namespace
+}  // namespace cerebellum
