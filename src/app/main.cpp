@@ -3,6 +3,7 @@
 #include <string>
 #include <vector>
 
+#include "app/cmd_command.hpp"
 #include "app/sim_command.hpp"
 
 namespace {
@@ -10,7 +11,9 @@ namespace {
 constexpr const char* kUsage =
     "usage: cerebellum <command> [options]\n"
     "commands:\n"
-    "  sim    run the MC on the simulated CyberDog2 (cerebellum sim --help)\n";
+    "  sim    run the MC on the simulated CyberDog2 (cerebellum sim --help)\n"
+    "  cmd    send a high-level command to a running MC and keep it alive (cerebellum cmd --help)\n"
+    "  status print the MC's high-level responses and odometry (cerebellum status --help)\n";
 
 }  // namespace
 
@@ -22,6 +25,8 @@ int main(int argc, char** argv) {
   }
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (args[0] == "sim") return cerebellum::run_sim_command(rest);
-  std::fprintf(stderr, "cerebellum: unknown command '%s' (accepted: sim)\n%s", args[0].c_str(), kUsage);
+  if (args[0] == "cmd") return cerebellum::run_cmd_command(rest);
+  if (args[0] == "status") return cerebellum::run_status_command(rest);
+  std::fprintf(stderr, "cerebellum: unknown command '%s' (accepted: sim, cmd, status)\n%s", args[0].c_str(), kUsage);
   return 2;
 }

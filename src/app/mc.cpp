@@ -1,5 +1,9 @@
 #include "app/mc.hpp"
 
+#include "control/qp/goldfarb_idnani_solver.hpp"
+
+#include <cmath>
+
 namespace cerebellum {
 
 HighLevelCommand startup_command(Startup startup) {
@@ -18,6 +22,14 @@ PureDamperConfig pure_damper_config(const McConfig& config) {
   return damper;
 }
 
+WalkingGaitsConfig walking_config(const McConfig& config) {
+  WalkingGaitsConfig walking;
+  walking.locomotion.tick_s = config.loop_period_s;
+  walking.locomotion.ticks_per_segment = static_cast<int>(std::lround(0.03 / config.loop_period_s));
+  walking.failure_damping_kd = config.safety.damping_kd;
+  return walking;
+}
+
 }  // namespace
 
 Mc::Mc(const McConfig& config)
@@ -25,12 +37,17 @@ Mc::Mc(const McConfig& config)
       backend_(config.robot),
       pure_damper_(pure_damper_config(config)),
       recovery_stand_(config.stand_up),
+      walking_(walking_config(config), std::make_unique<qp::GoldfarbIdnaniSolver>(), &estimator_),
+      locomotion_(gaits_),
       machine_(config.loop_period_s, startup_command(config.startup)),
       arbiter_(machine_),
       loop_(backend_, estimator_, arbiter_, config.safety, config.loop_period_s) {
   machine_.add_mode(off_);
   machine_.add_mode(pure_damper_);
   machine_.add_mode(recovery_stand_);
+  // every gait of the table runs on the MPC locomotion controller
+  for (int gait : {1, 2, 3, 4, 7, 10, 26, 27, 31}) gaits_.add(gait, walking_);
+  machine_.add_mode(locomotion_);
 }
 
 }  // namespace cerebellum

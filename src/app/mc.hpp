@@ -5,8 +5,10 @@
 #include "app/control_loop.hpp"
 #include "app/mc_config.hpp"
 #include "backend/mujoco_backend.hpp"
-#include "estimation/kinematic_estimator.hpp"
+#include "estimation/body_state_estimator.hpp"
 #include "modes/high_level_machine.hpp"
+#include "modes/locomotion_mode.hpp"
+#include "modes/walking_gaits.hpp"
 #include "modes/passive_modes.hpp"
 #include "modes/recovery_stand_mode.hpp"
 #include "modes/source_arbiter.hpp"
@@ -28,14 +30,18 @@ class Mc {
   SourceArbiter& arbiter() { return arbiter_; }
   ControlLoop& loop() { return loop_; }
   const McConfig& config() const { return config_; }
+  const WalkingGaits& walking() const { return walking_; }
 
  private:
   McConfig config_;
   MujocoBackend backend_;
-  KinematicEstimator estimator_;
+  BodyStateEstimator estimator_;
   OffMode off_;
   PureDamperMode pure_damper_;
   RecoveryStandMode recovery_stand_;
+  GaitRegistry gaits_;
+  WalkingGaits walking_;
+  LocomotionMode locomotion_;
   HighLevelMachine machine_;
   SourceArbiter arbiter_;
   ControlLoop loop_;

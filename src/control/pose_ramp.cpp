@@ -20,6 +20,8 @@ void PoseRamp::hold(const BodyPose& pose) {
 }
 
 void PoseRamp::move_to(const BodyPose& goal, double duration_s) {
+  // the goal already pursued: the running move goes on unchanged
+  if (goal.rpy == goal_.rpy && goal.position == goal_.position) return;
   from_ = value_;
   goal_ = goal;
   duration_s_ = std::max(duration_s, 0.0);

@@ -19,7 +19,7 @@ class PoseRamp {
  public:
   // sit at the pose
   void hold(const BodyPose& pose);
-  // start a move from the current value
+  // start a move from the current value (the goal already pursued: the move goes on)
   void move_to(const BodyPose& goal, double duration_s);
   void advance(double dt_s);
 

@@ -22,13 +22,13 @@ void QpStand::start(const RobotState& state) {
   goal_.pose = here;
 }
 
-void QpStand::set_goal(const QpStandGoal& goal, double duration_s) {
-  QpStandGoal bounded = goal;
-  bounded.pose.position.z() = std::min(bounded.pose.position.z(), config_.max_height_m);
-  goal_ = bounded;
-  ramp_.move_to(bounded.pose, duration_s > 0.0 ? duration_s : move_duration_s(ramp_.value(), bounded.pose, config_.speed));
-  support_.request(bounded.lifted_leg);
+void QpStand::set_goal(const QpStandGoal& goal, const PoseSpeed& speed, double min_duration_s) {
+  goal_ = goal;
+  goal_.pose.position.z() = std::min(goal_.pose.position.z(), config_.max_height_m);
+  ramp_.move_to(goal_.pose, std::max(min_duration_s, move_duration_s(ramp_.value(), goal_.pose, speed)));
+  support_.request(goal_.lifted_leg);
 }
+
 
 double QpStand::progress() const {
   return settled() ? 1.0 : std::min(ramp_.fraction(), 0.99);

@@ -21,7 +21,6 @@ struct QpStandGoal {
 struct QpStandConfig {
   BalanceConfig balance;
   SupportSequenceConfig support;
-  PoseSpeed speed;
   double max_height_m = 0.29;  // legs near full stretch (knee limit) cannot balance above this
 };
 
@@ -31,8 +30,8 @@ class QpStand {
 
   // take over at the current pose
   void start(const RobotState& state);
-  // move to a goal; duration_s <= 0 picks the time from the configured speeds
-  void set_goal(const QpStandGoal& goal, double duration_s);
+  // move to a goal from the current pose, no faster than speed and taking at least min_duration_s
+  void set_goal(const QpStandGoal& goal, const PoseSpeed& speed, double min_duration_s = 0.0);
   void compute(const RobotState& state, JointCommand& command);
 
   // 0..1: the pose move and the leg change done

@@ -1,5 +1,6 @@
 #include "modes/high_level_machine.hpp"
 
+#include "modes/body_watch.hpp"
 #include "modes/transition_table.hpp"
 
 namespace cerebellum {
@@ -34,9 +35,51 @@ void HighLevelMachine::refuse(const HighLevelCommand& command, const char* reaso
 }
 
 void HighLevelMachine::switch_to(Mode& mode, const RobotState& state, const HighLevelCommand& command) {
+  if (current_ != nullptr && current_ != &mode) current_->exit();
   current_ = &mode;
   banned_ = false;
+  running_command_ = command;
+  lift_detector_.reset();
+  if (mode.id() == ModeId::RecoveryStand) orientation_error_ = false;
   mode.enter(state, command);
+}
+
+const char* HighLevelMachine::protection_refusal(ModeId target) const {
+  if (orientation_error_ && target != ModeId::RecoveryStand && target != ModeId::Off && target != ModeId::PureDamper) {
+    return "orientation error: only a recovery stand clears it";
+  }
+  if (current_->id() == ModeId::Lifted && (target == ModeId::QpStand || target == ModeId::Locomotion)) {
+    return "lifted: the stand resumes by itself once the robot is set down";
+  }
+  return nullptr;
+}
+
+void HighLevelMachine::watch_body(const RobotState& state) {
+  const ModeId id = current_->id();
+  if (id == ModeId::Lifted) {
+    Mode* resume = mode_for(resume_command_.mode);
+    if (lift_detector_.landed(state) && resume != nullptr) switch_to(*resume, state, resume_command_);
+    return;
+  }
+  if (!watches_body(id)) return;
+  Mode* damper = mode_for(static_cast<int>(ModeId::PureDamper));
+  if (orientation_error(state) && damper != nullptr) {
+    // tipped over: damp the joints, drop the client's sequence, wait for a recovery stand
+    orientation_error_ = true;
+    queue_.clear();
+    applied_generation_ = queue_.generation();
+    HighLevelCommand damp;
+    damp.mode = static_cast<int>(ModeId::PureDamper);
+    switch_to(*damper, state, damp);
+    return;
+  }
+  Mode* lifted = mode_for(static_cast<int>(ModeId::Lifted));
+  if (lifted != nullptr && lift_detector_.lifted(state)) {
+    resume_command_ = command_after_landing(running_command_);
+    HighLevelCommand lift;
+    lift.mode = static_cast<int>(ModeId::Lifted);
+    switch_to(*lifted, state, lift);
+  }
 }
 
 void HighLevelMachine::apply(const RobotState& state, const HighLevelCommand& command) {
@@ -49,8 +92,13 @@ void HighLevelMachine::apply(const RobotState& state, const HighLevelCommand& co
     refuse(command, reason);
     return;
   }
+  if (const char* reason = protection_refusal(target->id())) {
+    refuse(command, reason);
+    return;
+  }
   if (target == current_) {
     banned_ = false;
+    running_command_ = command;
     current_->update(state, command);
     return;
   }
@@ -98,6 +146,7 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
     applied_generation_ = queue_.generation();
     if (const HighLevelCommand* next = queue_.current()) apply(state, *next);
   }
+  watch_body(state);
   queue_.tick(current_->progress_percent() < 100);
   current_->run(state, command);
   update_status(state);
@@ -111,9 +160,12 @@ void HighLevelMachine::update_status(const RobotState& state) {
     if (state.contact[leg] > 0.5) status_.contact |= 1 << leg;
   }
   status_.order_process_bar = current_->progress_percent();
-  status_.switch_status = banned_                             ? SwitchStatus::BanTransition
-                          : status_.order_process_bar < 100 ? SwitchStatus::Transitioning
-                                                            : SwitchStatus::Done;
+  status_.ori_error = orientation_error_ ? 1 : 0;
+  status_.switch_status = orientation_error_                 ? SwitchStatus::EmergencyStop
+                          : banned_                          ? SwitchStatus::BanTransition
+                          : current_->id() == ModeId::Lifted ? SwitchStatus::Lifted
+                          : status_.order_process_bar < 100  ? SwitchStatus::Transitioning
+                                                             : SwitchStatus::Done;
   status_.motor_error.fill(kMotorHealthy);
 }
 

@@ -10,6 +10,7 @@
 #include "modes/source_arbiter.hpp"
 #include "core/spsc_ring.hpp"
 #include "modes/command_queue.hpp"
+#include "modes/lift_detector.hpp"
 #include "modes/mode.hpp"
 
 namespace cerebellum {
@@ -61,6 +62,10 @@ class HighLevelMachine final : public OwnBehaviour {
   void switch_to(Mode& mode, const RobotState& state, const HighLevelCommand& command);
   void refuse(const HighLevelCommand& command, const char* reason);
   void update_status(const RobotState& state);
+  // the standing modes: tipped over -> PureDamper with ori_error; picked up -> Lifted; and back
+  void watch_body(const RobotState& state);
+  // why a command is refused while the robot is protected or lifted, or nullptr
+  const char* protection_refusal(ModeId target) const;
 
   CommandQueue queue_;
   SpscRing<TimedCommand, 64> inbox_;
@@ -73,6 +78,10 @@ class HighLevelMachine final : public OwnBehaviour {
   HighLevelStatus status_;
   bool banned_ = false;  // the last command was refused: BAN_TRANS until the next accepted one
   CommandCounters counters_;
+  LiftDetector lift_detector_;
+  HighLevelCommand running_command_;  // what the current mode was entered or last updated with
+  HighLevelCommand resume_command_;   // where a lifted robot goes once set down
+  bool orientation_error_ = false;    // latched until a recovery stand starts
   SpscRing<RefusalNote, 16> refusals_;
 };
 

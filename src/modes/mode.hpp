@@ -15,6 +15,8 @@ class Mode {
   virtual const char* check(const HighLevelCommand& command) const = 0;
   // the mode takes over the robot
   virtual void enter(const RobotState& state, const HighLevelCommand& command) = 0;
+  // another mode takes over the robot
+  virtual void exit() {}
   // a new command while this mode runs (same mode id, maybe another gait or target)
   virtual void update(const RobotState& state, const HighLevelCommand& command) = 0;
   // one control tick; must not block, allocate or print

@@ -38,7 +38,7 @@ class StandThenWalk final : public MotionController {
     estimator_.set_contact_schedule(schedule);
   }
 
-  bool set(const LocomotionCommand& command) {
+  bool set(const LocomotionTarget& command) {
     command_ = command;
     return !walking_ || walk_.set_command(command);
   }
@@ -50,12 +50,12 @@ class StandThenWalk final : public MotionController {
   StandUpController stand_;
   LocomotionController walk_;
   BodyStateEstimator& estimator_;
-  LocomotionCommand command_;
+  LocomotionTarget command_;
   bool walking_ = false;
 };
 
-inline LocomotionCommand walk_command(int gait, double vx, double vy = 0.0, double yaw_rate = 0.0) {
-  LocomotionCommand command;
+inline LocomotionTarget walk_command(int gait, double vx, double vy = 0.0, double yaw_rate = 0.0) {
+  LocomotionTarget command;
   command.gait = *gait_pattern(gait);
   command.velocity = {vx, vy, yaw_rate};
   return command;

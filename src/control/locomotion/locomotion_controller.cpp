@@ -55,7 +55,7 @@ void LocomotionController::reset(const RobotState& state) {
   consecutive_failures_ = 0;
 }
 
-bool LocomotionController::set_command(const LocomotionCommand& command) {
+bool LocomotionController::set_command(const LocomotionTarget& command) {
   if (!command.velocity.allFinite() || !std::isfinite(command.height_m) || !std::isfinite(command.pitch_rad) ||
       !std::isfinite(command.step_height_front_m) || !std::isfinite(command.step_height_rear_m)) {
     return false;
@@ -206,6 +206,11 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
     if (gait_change_pending_ && !(to_stand && moving)) {
       scheduler_.set_pattern(pending_gait_);
       gait_change_pending_ = false;
+    }
+    // the variable-frequency trot steps faster as the commanded speed grows
+    if (scheduler_.pattern().adapts_frequency) {
+      const GaitPattern adapted = variable_trot_pattern(velocity_.head<2>().norm());
+      if (adapted.period_segments != scheduler_.pattern().period_segments) scheduler_.set_pattern(adapted);
     }
     post_mpc(state);
   }

@@ -36,7 +36,7 @@ struct LocomotionConfig {
   int failed_solves_to_give_up = 3;
 };
 
-struct LocomotionCommand {
+struct LocomotionTarget {
   GaitPattern gait;
   Eigen::Vector3d velocity{0, 0, 0};  // vx, vy (body frame, m/s), yaw rate (rad/s); clamped to the gait
   double height_m = 0.25;
@@ -61,7 +61,7 @@ class LocomotionController {
   void reset(const RobotState& state);
   // false (and nothing changes) when a number in the command is not finite; velocities are
   // clamped to the gait's limits
-  bool set_command(const LocomotionCommand& command);
+  bool set_command(const LocomotionTarget& command);
   void compute(const RobotState& state, JointCommand& command);
 
   // false after several failed MPC solves in a row: the caller must switch to a safe behaviour
@@ -84,7 +84,7 @@ class LocomotionController {
   ConvexMpc mpc_;
   MpcWorker worker_;
   GaitScheduler scheduler_;
-  LocomotionCommand target_;
+  LocomotionTarget target_;
   GaitPattern pending_gait_;
   bool gait_change_pending_ = false;
   Eigen::Vector3d velocity_{0, 0, 0};  // ramped command

@@ -206,7 +206,8 @@ GoldfarbIdnaniSolver::StepLengths GoldfarbIdnaniSolver::step_lengths(double slac
   const double free_sq = projected_.segment(q_, n_ - q_).squaredNorm();
   const double tol = settings_.dependence_tolerance;
   steps.has_primal = free_sq > tol * tol * projected_.head(n_).squaredNorm();
-  if (steps.has_primal) steps.primal = -slack / free_sq;
+  // never backwards: a bound that rounding already nudged to feasibility is added in place
+  if (steps.has_primal) steps.primal = std::max(-slack / free_sq, 0.0);
   return steps;
 }
 

@@ -109,23 +109,26 @@ void LcmMotorSdkAdapter::publish(const Telemetry& telemetry) {
 }
 
 void LcmMotorSdkAdapter::log_changes(const MotorSdkStatus& status) {
-  if (!refusal_logged_ && source_.last_refusal_holder() != nullptr) {
-    refusal_logged_ = true;
-    std::fprintf(log_, "motor sdk: motor_ctrl refused: %s has the robot (motor mode is entered only from "
-                 "Off or PureDamper: mc.startup off or damper)\n", source_.last_refusal_holder());
-  }
+  const char* message = nullptr;
   const bool was_lost = last_status_.err_flag & kMotorSdkCommandLost;
   const bool is_lost = status.err_flag & kMotorSdkCommandLost;
   if (status.motor_mode && !last_status_.motor_mode) {
-    std::fprintf(log_, "motor sdk: motor mode entered; err_flag 0x02 until all-zero frames activate it\n");
+    message = "motor mode entered; err_flag 0x02 until all-zero frames activate it";
   } else if (is_lost && !was_lost) {
-    std::fprintf(log_, "motor sdk: err_flag 0x02: communication lost over 500 ms; damping, the robot lies "
-                 "down; send all-zero frames to recover\n");
+    message = "err_flag 0x02: communication lost over 500 ms; damping, the robot lies down; send all-zero "
+              "frames to recover";
   } else if (!is_lost && was_lost && status.motor_mode) {
-    std::fprintf(log_, "motor sdk: err_flag bit 1 cleared by all-zero frames; commands are executed\n");
+    message = "err_flag bit 1 cleared by all-zero frames; commands are executed";
   }
-  std::fflush(log_);
   last_status_ = status;
+  if (message != nullptr) std::fprintf(log_, "motor sdk: %s\n", message);
+  if (!refusal_logged_ && source_.last_refusal_holder() != nullptr) {
+    refusal_logged_ = true;
+    message = source_.last_refusal_holder();
+    std::fprintf(log_, "motor sdk: motor_ctrl refused: %s has the robot (motor mode is entered only from Off or "
+                 "PureDamper: mc.startup off or damper)\n", message);
+  }
+  if (message != nullptr) std::fflush(log_);
 }
 
 void LcmMotorSdkAdapter::log_counts_once_per_second() {

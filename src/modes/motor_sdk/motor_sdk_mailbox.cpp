@@ -23,7 +23,8 @@ std::optional<StampedFrame> MotorSdkMailbox::pop() {
 }
 
 bool MotorSdkMailbox::has_pending() const {
-  return accepted_.load(std::memory_order_acquire) != popped_.load(std::memory_order_relaxed);
+  // popped can pass accepted for a moment (the count follows the push): that reads as empty
+  return accepted_.load(std::memory_order_acquire) > popped_.load(std::memory_order_relaxed);
 }
 
 }  // namespace cerebellum

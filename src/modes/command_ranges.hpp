@@ -1,0 +1,72 @@
+// The ranges the high-level modes clamp their command fields to (docs/modes.md lists them with
+// their sources), and the decoding of the contact bits and the lifted foot's offset.
+#pragma once
+
+#include <Eigen/Core>
+
+#include "modes/high_level_command.hpp"
+
+namespace cerebellum {
+
+struct Range {
+  double lower;
+  double upper;
+  double clamp(double value) const;
+};
+
+// mode 3 (QP stand): roll, pitch absolute, yaw relative; x, y offsets; height absolute
+struct QpStandRanges {
+  Range roll{-0.52, 0.52};
+  Range pitch{-0.25, 0.3};
+  Range yaw{-0.65, 0.65};
+  Range offset_x{-0.05, 0.05};
+  Range offset_y{-0.05, 0.05};
+  Range height{0.15, 0.32};
+  double default_height_m = 0.235;  // used when pos_des[2] <= 0 (not given)
+};
+
+// mode 21 (pose control): gait 0 pose about the stand pose, gait 5 absolute height
+struct PoseControlRanges {
+  Range roll{-0.45, 0.45};
+  Range pitch{-0.45, 0.45};
+  Range yaw{-0.45, 0.45};
+  Range offset_x{-0.08, 0.08};
+  Range offset_y{-0.06, 0.06};
+  Range height{0.15, 0.27};       // gait 5, and base height + z offset of gait 0
+  Range ctrl_point{-0.3, 0.3};    // each axis, body frame
+  double default_height_m = 0.235;
+};
+
+// mode 11 stand gaits (1, 31): pitch and height
+struct LocomotionStandRanges {
+  Range pitch{-0.25, 0.3};
+  Range height{0.2, 0.28};
+  double default_height_m = 0.235;  // used when pos_des[2] <= 0 (not given)
+};
+
+// mode 11 velocity limits of a gait (reference table; clamped, not rejected)
+struct VelocityLimits {
+  Eigen::Vector3d min;  // vx, vy (m/s), yaw rate (rad/s)
+  Eigen::Vector3d max;
+};
+// nullptr for gaits without a velocity table (stand gaits, user gaits)
+const VelocityLimits* locomotion_velocity_limits(int gait_id);
+inline constexpr Range kStepHeightRange{0.0, 0.06};
+
+// the lifted foot's offset from its foothold (front legs: foot_pose[0..2], rear: [3..5])
+struct FootOffsetRanges {
+  Range x{-0.15, 0.15};
+  Range y{-0.10, 0.10};
+  Range z{0.0, 0.20};
+  double default_lift_m = 0.08;  // straight up when the offset is all zero
+};
+
+// contact bits (bit i: leg i on the ground): the single leg to lift, kNoLiftedLeg when all four
+// stay down (0x0F, or 0 as sent by clients that leave the field unset), kInvalidContact otherwise
+inline constexpr int kNoLiftedLeg = -1;
+inline constexpr int kInvalidContact = -2;
+int lifted_leg_from_contact(int contact);
+
+Eigen::Vector3d lifted_foot_offset(const HighLevelCommand& command, int leg, const FootOffsetRanges& ranges = {});
+
+}  // namespace cerebellum

@@ -1,0 +1,51 @@
+#include "modes/qp_stand_mode.hpp"
+
+#include <cmath>
+
+namespace cerebellum {
+
+QpStandGoal qp_stand_goal(const HighLevelCommand& command, const QpStandRanges& ranges,
+                          const FootOffsetRanges& foot_offset) {
+  QpStandGoal goal;
+  goal.pose.rpy = {ranges.roll.clamp(command.rpy_des[0]), ranges.pitch.clamp(command.rpy_des[1]),
+                   ranges.yaw.clamp(command.rpy_des[2])};
+  const double height = command.pos_des[2] > 0.0f ? ranges.height.clamp(command.pos_des[2]) : ranges.default_height_m;
+  goal.pose.position = {ranges.offset_x.clamp(command.pos_des[0]), ranges.offset_y.clamp(command.pos_des[1]), height};
+  goal.lifted_leg = lifted_leg_from_contact(command.contact);
+  if (goal.lifted_leg >= 0) goal.lifted_foot_offset = lifted_foot_offset(command, goal.lifted_leg, foot_offset);
+  return goal;
+}
+
+QpStandMode::QpStandMode(const QpStandModeConfig& config) : config_(config), stand_(config.stand) {}
+
+const char* QpStandMode::check(const HighLevelCommand& command) const {
+  if (command.gait_id != 0 && command.gait_id != 1 && command.gait_id != 3) {
+    return "mode 3 accepts gait 0 (absolute) or 1, 3 (incremental)";
+  }
+  if (lifted_leg_from_contact(command.contact) == kInvalidContact) return "mode 3 lifts at most one leg (contact bits)";
+  return nullptr;
+}
+
+void QpStandMode::enter(const RobotState& state, const HighLevelCommand& command) {
+  stand_.start(state);
+  update(state, command);
+}
+
+void QpStandMode::update(const RobotState&, const HighLevelCommand& command) {
+  gait_ = command.gait_id;
+  timed_ = command.duration > 0;
+  const QpStandGoal goal = qp_stand_goal(command, config_.ranges, config_.foot_offset);
+  const PoseSpeed& speed = gait_ == 0 ? config_.absolute_speed : config_.incremental_speed;
+  // a timed command moves within its duration, never faster than the speed allows
+  stand_.set_goal(goal, speed, timed_ ? command.duration * 1e-3 : 0.0);
+}
+
+void QpStandMode::run(const RobotState& state, JointCommand& command) { stand_.compute(state, command); }
+
+int QpStandMode::progress_percent() const {
+  // a timed entry's time runs while it moves (the queue pauses only for unfinished switches)
+  if (timed_) return 100;
+  return static_cast<int>(std::floor(stand_.progress() * 100.0));
+}
+
+}  // namespace cerebellum

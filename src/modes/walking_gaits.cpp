@@ -1,0 +1,64 @@
+#include "modes/walking_gaits.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+namespace cerebellum {
+
+LocomotionTarget locomotion_target_from(const LocomotionCommand& command, const WalkingGaitsConfig& config) {
+  LocomotionTarget target;
+  target.gait = *gait_pattern(command.gait_id);
+  target.velocity = command.velocity;
+  target.height_m = command.height_m;
+  target.pitch_rad = command.pitch_rad;
+  auto step = [&](double value) { return value >= 0.01 ? value : config.locomotion.default_step_height_m; };
+  target.step_height_front_m = step(command.step_height_m[0]);
+  target.step_height_rear_m = step(command.step_height_m[1]);
+  target.vertical_legs = (command.value & 0b10) != 0;
+  return target;
+}
+
+WalkingGaits::WalkingGaits(const WalkingGaitsConfig& config, std::unique_ptr<qp::QpSolver> solver,
+                           BodyStateEstimator* estimator)
+    : config_(config), controller_(config.locomotion, std::move(solver)), estimator_(estimator) {}
+
+const char* WalkingGaits::check(const HighLevelCommand& command) const {
+  if (!gait_pattern(command.gait_id)) return "gait not available in mode 11";
+  for (float v : command.vel_des) {
+    if (!std::isfinite(v)) return "non-finite velocity in a locomotion command";
+  }
+  return nullptr;
+}
+
+void WalkingGaits::start(const RobotState& state, const LocomotionCommand& command) {
+  controller_.set_command(locomotion_target_from(command, config_));
+  controller_.reset(state);
+}
+
+void WalkingGaits::update(const LocomotionCommand& command) {
+  controller_.set_command(locomotion_target_from(command, config_));
+}
+
+void WalkingGaits::stop() {
+  if (estimator_ != nullptr) estimator_->clear_contact_schedule();
+}
+
+void WalkingGaits::run(const RobotState& state, JointCommand& command) {
+  if (failed()) {
+    // no trustworthy stance forces: soft joints, the robot sinks to the ground
+    command = JointCommand{};
+    command.q_des = state.q;
+    command.kd.fill(config_.failure_damping_kd);
+    return;
+  }
+  controller_.compute(state, command);
+  if (estimator_ == nullptr) return;
+  ContactSchedule schedule{};
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const LegPhase phase = controller_.scheduler().leg_phase(leg);
+    schedule[leg] = {phase.stance ? 1.0 : 0.0, phase.stance_phase};
+  }
+  estimator_->set_contact_schedule(schedule);
+}
+
+}  // namespace cerebellum

@@ -1,0 +1,46 @@
+// The MPC gaits of mode 11 (27, 3, 10, 26, 4, 2, 7, and the stands 1 / 31 when reached from
+// walking): one LocomotionGait registered under every such gait id, so a gait or velocity change
+// while walking updates the running controller. It feeds the gait's contact schedule to the
+// estimator and falls back to joint damping when the MPC keeps failing.
+#pragma once
+
+#include <memory>
+
+#include "control/locomotion/locomotion_controller.hpp"
+#include "estimation/body_state_estimator.hpp"
+#include "modes/locomotion_gait.hpp"
+
+namespace cerebellum {
+
+struct WalkingGaitsConfig {
+  LocomotionConfig locomotion;
+  double failure_damping_kd = 4.0;
+};
+
+// the locomotion controller's target for a (clamped) mode-11 command; a step height below 1 cm
+// (0 = not given) means the default step height
+LocomotionTarget locomotion_target_from(const LocomotionCommand& command, const WalkingGaitsConfig& config);
+
+class WalkingGaits final : public LocomotionGait {
+ public:
+  // estimator (may be null): gets the planned contacts every tick while walking
+  WalkingGaits(const WalkingGaitsConfig& config, std::unique_ptr<qp::QpSolver> solver, BodyStateEstimator* estimator);
+
+  const char* check(const HighLevelCommand& command) const override;
+  void start(const RobotState& state, const LocomotionCommand& command) override;
+  void update(const LocomotionCommand& command) override;
+  void run(const RobotState& state, JointCommand& command) override;
+  void stop() override;
+  int progress_percent() const override { return 100; }
+
+  // the MPC failed several times in a row: the robot is being damped down
+  bool failed() const { return !controller_.healthy(); }
+  const LocomotionController& controller() const { return controller_; }
+
+ private:
+  WalkingGaitsConfig config_;
+  LocomotionController controller_;
+  BodyStateEstimator* estimator_;
+};
+
+}  // namespace cerebellum

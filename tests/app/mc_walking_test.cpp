@@ -1,0 +1,97 @@
+// The whole MC in lockstep: high-level commands through the state machine make the simulated
+// robot stand and walk (the path a real client's commands take, without the transport).
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <string>
+
+#include "app/mc.hpp"
+
+namespace cerebellum {
+namespace {
+
+struct Client {
+  explicit Client(Mc& mc) : mc(mc) {}
+
+  // send a new command, then heartbeat it every 0.1 s while the robot runs for seconds
+  void run(HighLevelCommand command, double seconds) {
+    command.life_count = ++life_count;
+    const double end = mc.backend().time_s() + seconds - 1e-9;
+    double next_send = 0.0;
+    while (mc.backend().time_s() < end) {
+      if (mc.backend().time_s() >= next_send) {
+        mc.machine().submit(command, mc.backend().time_s());
+        next_send = mc.backend().time_s() + 0.1;
+      }
+      mc.loop().tick();
+    }
+  }
+  Mc& mc;
+  int life_count = 0;
+};
+
+HighLevelCommand command(ModeId mode, int gait, double vx = 0.0, double yaw_rate = 0.0) {
+  HighLevelCommand c;
+  c.mode = static_cast<int>(mode);
+  c.gait_id = gait;
+  c.vel_des = {static_cast<float>(vx), 0.0f, static_cast<float>(yaw_rate)};
+  return c;
+}
+
+McConfig lying_start() {
+  McConfig config = default_config();
+  config.startup = Startup::Off;
+  return config;
+}
+
+TEST(McWalking, StandsThenTrotsForwardOnCommand) {
+  Mc mc(lying_start());
+  Client client(mc);
+  client.run(command(ModeId::RecoveryStand, 0), 3.0);
+  EXPECT_EQ(mc.machine().status().mode, 12);
+  EXPECT_EQ(mc.machine().status().order_process_bar, 100);
+  const double x0 = mc.backend().ground_truth().position[0];
+  client.run(command(ModeId::Locomotion, 3, 0.5), 5.0);
+  EXPECT_EQ(mc.machine().status().mode, 11);
+  EXPECT_EQ(mc.machine().status().gait_id, 3);
+  EXPECT_EQ(mc.machine().status().switch_status, SwitchStatus::Done);
+  EXPECT_NEAR(mc.backend().ground_truth().position[0] - x0, 2.5, 0.15 * 2.5);
+  EXPECT_GT(mc.backend().ground_truth().position[2], 0.22);
+}
+
+TEST(McWalking, WalkingFromLyingIsBannedAndTheRobotStaysDown) {
+  Mc mc(lying_start());
+  Client client(mc);
+  client.run(command(ModeId::Locomotion, 3, 0.5), 1.0);
+  EXPECT_EQ(mc.machine().status().mode, 0);
+  EXPECT_EQ(mc.machine().status().switch_status, SwitchStatus::BanTransition);
+  EXPECT_LT(mc.backend().ground_truth().position[2], 0.2);
+}
+
+TEST(McWalking, ClientThatVanishesWhileWalkingGetsTheRobotDamped) {
+  Mc mc(lying_start());
+  Client client(mc);
+  client.run(command(ModeId::RecoveryStand, 0), 3.0);
+  client.run(command(ModeId::Locomotion, 27, 0.3), 2.0);
+  // silence: no heartbeat for 2 s
+  for (int i = 0; i < 1000; ++i) mc.loop().tick();
+  EXPECT_EQ(mc.machine().status().mode, 7);
+  EXPECT_LT(mc.backend().ground_truth().position[2], 0.2);
+  const auto v = mc.backend().ground_truth().velocity_world;
+  EXPECT_LT(std::hypot(v[0], v[1]), 0.1);
+}
+
+TEST(McWalking, StopsAndStandsWhenAskedForTheStandGaitWhileRunning) {
+  Mc mc(lying_start());
+  Client client(mc);
+  client.run(command(ModeId::RecoveryStand, 0), 3.0);
+  client.run(command(ModeId::Locomotion, 10, 1.2), 4.0);
+  client.run(command(ModeId::Locomotion, 1), 3.0);
+  const auto v = mc.backend().ground_truth().velocity_world;
+  EXPECT_LT(std::hypot(v[0], v[1]), 0.1);
+  EXPECT_GT(mc.backend().ground_truth().position[2], 0.22);
+  EXPECT_EQ(mc.machine().status().gait_id, 1);
+}
+
+}  // namespace
+}  // namespace cerebellum
