@@ -156,6 +156,20 @@ void read_motor_sdk(const SectionReader& section, const fs::path& base_dir, Moto
   }
 }
 
+void read_highlevel(const SectionReader& section, HighLevelLcmConfig& highlevel) {
+  section.flag("enabled", highlevel.enabled);
+  const auto read_url = [&section](const std::string& key, std::string& url) {
+    section.text(key, url);
+    if (const std::string problem = lcm_url_problem(url); !problem.empty()) {
+      section.fail("highlevel." + key, problem + ", got '" + url + "'");
+    }
+  };
+  read_url("command_url", highlevel.command_url);
+  read_url("response_url", highlevel.response_url);
+  read_url("odometry_url", highlevel.odometry_url);
+  section.number("response_keepalive_s", highlevel.response_keepalive_s, 0.0, 0.19);
+}
+
 }  // namespace
 
 McConfig default_config() {
@@ -174,7 +188,7 @@ McConfig load_config(const std::string& path) {
   }
   McConfig config = default_config();
   if (root.IsNull()) return config;
-  const SectionReader top(root, path, "<top>", {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk"});
+  const SectionReader top(root, path, "<top>", {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk", "highlevel"});
   const fs::path base_dir = fs::absolute(path).parent_path();
 
   if (root["mc"]) {
@@ -215,6 +229,11 @@ McConfig load_config(const std::string& path) {
     read_motor_sdk(SectionReader(root["motor_sdk"], path, "motor_sdk",
                                  {"enabled", "control_url", "estimator_url", "user_parameter_file"}),
                    base_dir, config.motor_sdk);
+  }
+  if (root["highlevel"]) {
+    read_highlevel(SectionReader(root["highlevel"], path, "highlevel",
+                                 {"enabled", "command_url", "response_url", "odometry_url", "response_keepalive_s"}),
+                   config.highlevel);
   }
   return config;
 }

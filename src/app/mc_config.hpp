@@ -7,6 +7,7 @@
 
 #include "backend/mujoco_backend.hpp"
 #include "control/stand_up_controller.hpp"
+#include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
 #include "safety/command_guard.hpp"
@@ -28,6 +29,7 @@ struct McConfig {
   GuardLimits safety;
   ShmLowLevelConfig shm;
   MotorSdkConfig motor_sdk;
+  HighLevelLcmConfig highlevel;
 };
 
 // raised for a bad file, key or value; the message names the file, the key and what is accepted

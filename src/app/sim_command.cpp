@@ -10,6 +10,7 @@
 #include "app/sim_options.hpp"
 #include "app/mc.hpp"
 #include "app/stop_signal.hpp"
+#include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_source.hpp"
 
@@ -50,6 +51,11 @@ int run_sim_command(const std::vector<std::string>& args) {
       mc.arbiter().add_low_level_source(motor_sdk->source());
       loop.add_observer(*motor_sdk);
     }
+    std::optional<LcmHighLevelAdapter> highlevel;
+    if (config.highlevel.enabled) {
+      highlevel.emplace(mc.machine(), config.highlevel, config.loop_period_s, stderr);
+      loop.add_observer(*highlevel);
+    }
 
     std::printf("cerebellum ready: simulated CyberDog2 (%s), %.0f Hz loop, speed %s\n",
                 config.robot.model_path.c_str(), 1.0 / config.loop_period_s,
@@ -58,6 +64,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     const RunStats stats = loop.run({options.duration_s, options.speed}, stop_signal.flag());
     reporter.finish();
     if (motor_sdk) motor_sdk->finish(stdout);
+    if (highlevel) highlevel->finish(stdout);
     std::printf("cerebellum stopped: %.2f s robot time in %.2f s wall time (%.1fx real time), %llu ticks, "
                 "%llu late substeps, trunk height %.3f m (simulator truth)\n",
                 stats.robot_time_s, stats.wall_time_s,

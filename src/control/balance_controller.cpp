@@ -32,13 +32,16 @@ void BalanceController::start(const RobotState& state) {
   was_in_air_ = {};
   estimated_pose_ = frame_.anchored_pose();
   estimated_velocity_.setZero();
+  height_integral_ = 0.0;
+  angle_integral_.setZero();
 }
 
 Eigen::Vector2d BalanceController::body_xy_for_com(const Eigen::Vector2d& com_xy, const Eigen::Vector3d& rpy) const {
   return com_xy - (rotation_from_rpy(rpy) * config_.com_in_body).head<2>();
 }
 
-void BalanceController::compute(const RobotState& state, const BalanceTarget& target, JointCommand& command) {
+void BalanceController::compute(const RobotState& state, const BalanceTarget& target, double dt_s,
+                                JointCommand& command) {
   const Eigen::Matrix3d rotation = frame_.body_rotation(state);
 
   // a leg that has just been put down stands where its foot is now
@@ -63,12 +66,19 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
   }
   acceleration.head<2>() = clamp_norm(Eigen::Vector3d(acceleration.x(), acceleration.y(), 0.0),
                                       config_.max_position_acceleration).head<2>();
+  height_integral_ = std::clamp(height_integral_ + dt_s * config_.ki_height * position_error.z(),
+                                -config_.max_integral_height_acceleration, config_.max_integral_height_acceleration);
+  acceleration.z() += height_integral_;
   const Eigen::Matrix3d rotation_des = rotation_from_rpy(target.pose.rpy);
   const Eigen::AngleAxisd rotation_error(rotation_des * rotation.transpose());
   const Eigen::Vector3d angle_error = rotation_error.angle() * rotation_error.axis();
+  angle_integral_ = (angle_integral_ + dt_s * config_.ki_orientation.cwiseProduct(angle_error))
+                       .cwiseMax(-config_.max_integral_angular_acceleration)
+                       .cwiseMin(config_.max_integral_angular_acceleration);
   const Eigen::Vector3d angular_acceleration =
       clamp_norm(config_.kp_orientation.cwiseProduct(angle_error) - config_.kd_orientation.cwiseProduct(omega),
-                 config_.max_tilt_acceleration);
+                 config_.max_tilt_acceleration) +
+      angle_integral_;
   const Eigen::Matrix3d inertia = rotation * config_.inertia_diag.asDiagonal() * rotation.transpose();
   wrench_.head<3>() = config_.mass_kg * (acceleration + Eigen::Vector3d(0.0, 0.0, kGravity));
   wrench_.tail<3>() = inertia * angular_acceleration;

@@ -19,12 +19,17 @@ struct BalanceConfig {
   double mass_kg = robot::kTotalMassKg;
   Eigen::Vector3d inertia_diag{robot::kMpcInertiaDiag[0], robot::kMpcInertiaDiag[1], robot::kMpcInertiaDiag[2]};
   // centre of mass of the whole robot in the body frame (trunk COM weighted with the legs)
-  Eigen::Vector3d com_in_body{0.013, 0.0, -0.01};
+  Eigen::Vector3d com_in_body{0.0065, 0.0, -0.005};
   // PD gains as accelerations: per m (1/s^2) and per m/s (1/s), per rad and per rad/s
-  Eigen::Vector3d kp_position{60.0, 60.0, 150.0};
-  Eigen::Vector3d kd_position{12.0, 12.0, 18.0};
-  Eigen::Vector3d kp_orientation{150.0, 150.0, 100.0};
-  Eigen::Vector3d kd_orientation{14.0, 14.0, 12.0};
+  Eigen::Vector3d kp_position{60.0, 60.0, 200.0};
+  Eigen::Vector3d kd_position{12.0, 12.0, 20.0};
+  Eigen::Vector3d kp_orientation{200.0, 200.0, 150.0};
+  Eigen::Vector3d kd_orientation{16.0, 16.0, 14.0};
+  // integral action on height and orientation: removes the sag from leg weight and joint friction
+  double ki_height = 100.0;                   // 1/s^3
+  Eigen::Vector3d ki_orientation{80.0, 80.0, 80.0};  // 1/s^3
+  double max_integral_height_acceleration = 3.0;     // m/s^2
+  double max_integral_angular_acceleration = 10.0;   // rad/s^2
   double max_tilt_acceleration = 30.0;  // rad/s^2 cap on the orientation PD
   double max_position_acceleration = 6.0;  // m/s^2 cap on the horizontal PD
   ForceDistributionConfig distribution;
@@ -48,9 +53,10 @@ class BalanceController {
  public:
   explicit BalanceController(const BalanceConfig& config = {});
 
-  // anchor the stance frame at the current feet
+  // anchor the stance frame at the current feet, forget the integrators
   void start(const RobotState& state);
-  void compute(const RobotState& state, const BalanceTarget& target, JointCommand& command);
+  // dt_s: time since the last compute (integrators)
+  void compute(const RobotState& state, const BalanceTarget& target, double dt_s, JointCommand& command);
 
   const StanceFrame& frame() const { return frame_; }
   const BalanceConfig& config() const { return config_; }
@@ -72,6 +78,8 @@ class BalanceController {
   BodyPose estimated_pose_;
   Eigen::Vector3d estimated_velocity_ = Eigen::Vector3d::Zero();
   Vector6d wrench_ = Vector6d::Zero();
+  double height_integral_ = 0.0;                           // m/s^2
+  Eigen::Vector3d angle_integral_ = Eigen::Vector3d::Zero();  // rad/s^2
   std::array<Eigen::Vector3d, kNumLegs> forces_{};
   bool solve_ok_ = false;
 };

@@ -25,7 +25,7 @@ struct PoseControlConfig {
   double kp = 80.0;
   double kd = 2.0;
   double mass_kg = robot::kTotalMassKg;
-  Eigen::Vector3d com_in_body{0.013, 0.0, -0.01};
+  Eigen::Vector3d com_in_body{0.0065, 0.0, -0.005};
   ForceDistributionConfig distribution;
 };
 

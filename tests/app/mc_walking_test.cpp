@@ -5,37 +5,13 @@
 #include <cmath>
 #include <string>
 
-#include "app/mc.hpp"
+#include "app/lockstep_client.hpp"
 
 namespace cerebellum {
 namespace {
 
-struct Client {
-  explicit Client(Mc& mc) : mc(mc) {}
-
-  // send a new command, then heartbeat it every 0.1 s while the robot runs for seconds
-  void run(HighLevelCommand command, double seconds) {
-    command.life_count = ++life_count;
-    const double end = mc.backend().time_s() + seconds - 1e-9;
-    double next_send = 0.0;
-    while (mc.backend().time_s() < end) {
-      if (mc.backend().time_s() >= next_send) {
-        mc.machine().submit(command, mc.backend().time_s());
-        next_send = mc.backend().time_s() + 0.1;
-      }
-      mc.loop().tick();
-    }
-  }
-  Mc& mc;
-  int life_count = 0;
-};
-
 HighLevelCommand command(ModeId mode, int gait, double vx = 0.0, double yaw_rate = 0.0) {
-  HighLevelCommand c;
-  c.mode = static_cast<int>(mode);
-  c.gait_id = gait;
-  c.vel_des = {static_cast<float>(vx), 0.0f, static_cast<float>(yaw_rate)};
-  return c;
+  return high_level_command(mode, gait, vx, 0.0, yaw_rate);
 }
 
 McConfig lying_start() {
@@ -46,7 +22,7 @@ McConfig lying_start() {
 
 TEST(McWalking, StandsThenTrotsForwardOnCommand) {
   Mc mc(lying_start());
-  Client client(mc);
+  LockstepClient client(mc);
   client.run(command(ModeId::RecoveryStand, 0), 3.0);
   EXPECT_EQ(mc.machine().status().mode, 12);
   EXPECT_EQ(mc.machine().status().order_process_bar, 100);
@@ -61,7 +37,7 @@ TEST(McWalking, StandsThenTrotsForwardOnCommand) {
 
 TEST(McWalking, WalkingFromLyingIsBannedAndTheRobotStaysDown) {
   Mc mc(lying_start());
-  Client client(mc);
+  LockstepClient client(mc);
   client.run(command(ModeId::Locomotion, 3, 0.5), 1.0);
   EXPECT_EQ(mc.machine().status().mode, 0);
   EXPECT_EQ(mc.machine().status().switch_status, SwitchStatus::BanTransition);
@@ -70,7 +46,7 @@ TEST(McWalking, WalkingFromLyingIsBannedAndTheRobotStaysDown) {
 
 TEST(McWalking, ClientThatVanishesWhileWalkingGetsTheRobotDamped) {
   Mc mc(lying_start());
-  Client client(mc);
+  LockstepClient client(mc);
   client.run(command(ModeId::RecoveryStand, 0), 3.0);
   client.run(command(ModeId::Locomotion, 27, 0.3), 2.0);
   // silence: no heartbeat for 2 s
@@ -83,7 +59,7 @@ TEST(McWalking, ClientThatVanishesWhileWalkingGetsTheRobotDamped) {
 
 TEST(McWalking, StopsAndStandsWhenAskedForTheStandGaitWhileRunning) {
   Mc mc(lying_start());
-  Client client(mc);
+  LockstepClient client(mc);
   client.run(command(ModeId::RecoveryStand, 0), 3.0);
   client.run(command(ModeId::Locomotion, 10, 1.2), 4.0);
   client.run(command(ModeId::Locomotion, 1), 3.0);

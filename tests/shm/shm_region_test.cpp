@@ -80,6 +80,21 @@ TEST(ShmRegion, ObjectOfAnotherUserIsRefusedAndLeftAlone) {
   ::shm_unlink(name.c_str());
 }
 
+TEST(ShmRegion, SecondOwnerOfALiveObjectIsRefused) {
+  const std::string name = unique_shm_object_name("obj");
+  ShmRegion first(name, 1024, 0660);
+  static_cast<unsigned char*>(first.data())[7] = 42;
+  try {
+    ShmRegion second(name, 1024, 0660);
+    ADD_FAILURE() << "two owners of " << name;
+  } catch (const std::runtime_error& e) {
+    EXPECT_NE(std::string(e.what()).find("already served by another running MC"), std::string::npos) << e.what();
+  }
+  // the first owner's object is untouched
+  EXPECT_TRUE(shm_object_exists(name));
+  EXPECT_EQ(static_cast<unsigned char*>(first.data())[7], 42);
+}
+
 TEST(ShmRegion, BadNameIsReported) {
   EXPECT_THROW(ShmRegion("/no/slashes/inside", 1024, 0660), std::runtime_error);
 }

@@ -109,14 +109,16 @@ void LocomotionController::post_mpc(const RobotState& state) {
   // yaw without wrap: the reference continues from the current yaw
   const double yaw = state.rpy.z();
   const double yaw_offset = std::clamp(wrap_angle(yaw_des_ - yaw), -0.2, 0.2);
-  const Eigen::Vector3d velocity_world = yaw_rotation(yaw) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
   const double ground_z = state.position_world.z() - state.height_m;
+  // the reference turns with the commanded yaw rate: velocity and position follow the arc
+  Eigen::Vector3d position = state.position_world;
   for (int k = 0; k < kMpcHorizon; ++k) {
-    const double t = (k + 1) * dt;
+    const double yaw_k = yaw + yaw_offset + velocity_.z() * (k + 1) * dt;
+    const Eigen::Vector3d velocity_world = yaw_rotation(yaw_k) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
+    position += velocity_world * dt;
     auto& x = in.x_ref[k];
-    x << 0.0, target_.pitch_rad, yaw + yaw_offset + velocity_.z() * t,
-        state.position_world.x() + velocity_world.x() * t, state.position_world.y() + velocity_world.y() * t,
-        ground_z + target_.height_m + height_correction_m_, 0.0, 0.0, velocity_.z(), velocity_world.x(), velocity_world.y(), 0.0, -9.81;
+    x << 0.0, target_.pitch_rad, yaw_k, position.x(), position.y(), ground_z + target_.height_m + height_correction_m_,
+        0.0, 0.0, velocity_.z(), velocity_world.x(), velocity_world.y(), 0.0, -9.81;
   }
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
@@ -192,6 +194,27 @@ void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& ph
   }
 }
 
+void LocomotionController::change_pattern_if_due(const RobotState& state) {
+  GaitPattern next = scheduler_.pattern();
+  // a stand gait cannot stop a moving body: keep stepping until it has slowed down
+  const bool to_stand = pending_gait_.stance[0] == pending_gait_.period_segments;
+  const bool moving = velocity_.head<2>().norm() > 0.05 || state.velocity_world.head<2>().norm() > 0.15;
+  if (gait_change_pending_ && !(to_stand && moving)) {
+    next = pending_gait_;
+    gait_change_pending_ = false;
+  }
+  // the variable-frequency trot steps faster as the commanded speed grows
+  // (turning counts as the speed of a hip 0.2 m from the centre)
+  if (next.adapts_frequency) next = variable_trot_pattern(velocity_.head<2>().norm() + 0.2 * std::abs(velocity_.z()));
+  if (next.id == scheduler_.pattern().id && next.period_segments == scheduler_.pattern().period_segments) return;
+  scheduler_.set_pattern(next);
+  // feet already in the air start their new swing from where they are
+  const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    if (!was_stance_[leg]) swing_start_[leg] = state.position_world + body_to_world * state.foot_position_body[leg];
+  }
+}
+
 void LocomotionController::compute(const RobotState& state, JointCommand& command) {
   ramp_velocity();
   yaw_des_ = wrap_angle(yaw_des_ + velocity_.z() * config_.tick_s);
@@ -200,18 +223,8 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
       -config_.height_integral_limit_m, config_.height_integral_limit_m);
   if (tick_in_segment_ == 1) collect_mpc();
   if (tick_in_segment_ == 0) {
-    // a stand gait cannot stop a moving body: keep stepping until it has slowed down
-    const bool to_stand = pending_gait_.stance[0] == pending_gait_.period_segments;
-    const bool moving = velocity_.head<2>().norm() > 0.05 || state.velocity_world.head<2>().norm() > 0.15;
-    if (gait_change_pending_ && !(to_stand && moving)) {
-      scheduler_.set_pattern(pending_gait_);
-      gait_change_pending_ = false;
-    }
-    // the variable-frequency trot steps faster as the commanded speed grows
-    if (scheduler_.pattern().adapts_frequency) {
-      const GaitPattern adapted = variable_trot_pattern(velocity_.head<2>().norm());
-      if (adapted.period_segments != scheduler_.pattern().period_segments) scheduler_.set_pattern(adapted);
-    }
+    // patterns change only where a cycle starts, so no foot is switched to stance mid-air
+    if (scheduler_.cycle_phase() < 1e-9) change_pattern_if_due(state);
     post_mpc(state);
   }
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();

@@ -74,6 +74,7 @@ class LocomotionController {
 
  private:
   void ramp_velocity();
+  void change_pattern_if_due(const RobotState& state);
   void post_mpc(const RobotState& state);
   void collect_mpc();
   void command_swing_leg(std::size_t leg, const LegPhase& phase, const RobotState& state, JointCommand& command);

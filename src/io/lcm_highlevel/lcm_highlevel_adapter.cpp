@@ -81,7 +81,9 @@ void LcmHighLevelAdapter::on_cycle(const CycleRecord& record) {
   latest_tick_.store(record.tick, std::memory_order_relaxed);
   const HighLevelStatus& status = machine_.status();
   const PublishDue due = schedule_.on_tick(record.tick, status);
-  if (due.any()) telemetry_.try_push(Telemetry{due, record.tick, status, record.state});
+  if (due.any() && telemetry_.try_push(Telemetry{due, record.tick, status, record.state})) {
+    feedback_queued_.fetch_add(1, std::memory_order_release);
+  }
 }
 
 HighLevelInterfaceCounters LcmHighLevelAdapter::counters() const {
@@ -95,6 +97,8 @@ HighLevelInterfaceCounters LcmHighLevelAdapter::counters() const {
   c.temperatures_published = temperatures_published_.load();
   c.gait_files_accepted = gait_files_accepted_.load();
   c.gait_files_refused = gait_files_refused_.load();
+  c.feedback_queued = feedback_queued_.load(std::memory_order_acquire);
+  c.feedback_sent = feedback_sent_.load(std::memory_order_acquire);
   c.telemetry_dropped = telemetry_.dropped();
   return c;
 }
@@ -161,6 +165,7 @@ void LcmHighLevelAdapter::publish(const Telemetry& telemetry) {
     response_lcm_->publish(kTemperatureChannel, &temperature);
     temperatures_published_.fetch_add(1);
   }
+  feedback_sent_.fetch_add(1, std::memory_order_release);
 }
 
 void LcmHighLevelAdapter::publish_response(const HighLevelStatus& status, std::uint64_t tick) {

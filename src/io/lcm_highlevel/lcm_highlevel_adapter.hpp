@@ -37,7 +37,9 @@ struct HighLevelInterfaceCounters {
   std::uint64_t temperatures_published = 0;
   std::uint64_t gait_files_accepted = 0;
   std::uint64_t gait_files_refused = 0;
-  std::uint64_t telemetry_dropped = 0;  // cycles the interface thread could not keep up with
+  std::uint64_t feedback_queued = 0;    // cycles with something due, copied by the loop thread
+  std::uint64_t feedback_sent = 0;      // ... and published by the interface thread
+  std::uint64_t telemetry_dropped = 0;  // ... and dropped: the interface thread fell behind
 };
 
 class LcmHighLevelAdapter final : public CycleObserver {
@@ -93,6 +95,7 @@ class LcmHighLevelAdapter final : public CycleObserver {
   SpscRing<Telemetry, 128> telemetry_;
   std::atomic<double> robot_time_s_{0.0};  // of the newest cycle: stamps received commands
   std::atomic<std::uint64_t> latest_tick_{0};
+  std::atomic<std::uint64_t> feedback_queued_{0};
   // interface thread -> anyone
   std::atomic<std::uint64_t> commands_submitted_{0};
   std::atomic<std::uint64_t> wrong_fingerprint_{0};
@@ -103,6 +106,7 @@ class LcmHighLevelAdapter final : public CycleObserver {
   std::atomic<std::uint64_t> temperatures_published_{0};
   std::atomic<std::uint64_t> gait_files_accepted_{0};
   std::atomic<std::uint64_t> gait_files_refused_{0};
+  std::atomic<std::uint64_t> feedback_sent_{0};
   std::atomic<bool> running_{true};
   // interface thread only
   HighLevelStatus last_status_;

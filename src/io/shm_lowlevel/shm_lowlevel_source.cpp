@@ -2,6 +2,7 @@
 
 #include <cstddef>
 #include <cstring>
+#include <stdexcept>
 
 namespace cerebellum {
 namespace {
@@ -24,10 +25,15 @@ void damping_into(const SensorFrame& frame, double damping_kd, JointCommand& com
   command.kd.fill(damping_kd);
 }
 
+const ShmLowLevelConfig& checked(const ShmLowLevelConfig& config) {
+  if (config.command_timeout_cycles < 1) throw std::invalid_argument("shm: command_timeout_cycles must be >= 1");
+  return config;
+}
+
 }  // namespace
 
 ShmLowLevelSource::ShmLowLevelSource(const ShmLowLevelConfig& config, const GuardLimits& limits, std::FILE* log)
-    : config_(config),
+    : config_(checked(config)),
       gain_bounds_{limits.kp_max, limits.kd_max},
       damping_kd_(limits.damping_kd),
       spline_(shm_spline_object_name(config.name_prefix), LOWLEVEL_SPLINE_SHM_SIZE, config.mode),

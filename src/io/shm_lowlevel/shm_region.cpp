@@ -1,6 +1,7 @@
 #include "io/shm_lowlevel/shm_region.hpp"
 
 #include <fcntl.h>
+#include <sys/file.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -16,13 +17,20 @@ namespace {
   throw std::runtime_error("shared memory " + name + ": " + what + ": " + std::strerror(error));
 }
 
-// closes the descriptor on every path out of the constructor
-class FdCloser {
+// closes the descriptor when the constructor fails
+class FdGuard {
  public:
-  explicit FdCloser(int fd) : fd_(fd) {}
-  ~FdCloser() { ::close(fd_); }
-  FdCloser(const FdCloser&) = delete;
-  FdCloser& operator=(const FdCloser&) = delete;
+  explicit FdGuard(int fd) : fd_(fd) {}
+  ~FdGuard() {
+    if (fd_ >= 0) ::close(fd_);
+  }
+  FdGuard(const FdGuard&) = delete;
+  FdGuard& operator=(const FdGuard&) = delete;
+  int release() {
+    const int fd = fd_;
+    fd_ = -1;
+    return fd;
+  }
 
  private:
   int fd_;
@@ -34,7 +42,7 @@ ShmRegion::ShmRegion(std::string name, std::size_t size_bytes, unsigned mode)
     : name_(std::move(name)), size_bytes_(size_bytes) {
   const int fd = ::shm_open(name_.c_str(), O_CREAT | O_RDWR, static_cast<mode_t>(mode));
   if (fd < 0) fail(name_, "shm_open", errno);
-  const FdCloser closer(fd);
+  FdGuard guard(fd);
   // a client started first, or an earlier run that crashed, may have left the object: take it
   // over only when it is ours, so nobody else decides its permissions or content
   struct stat info {};
@@ -42,6 +50,12 @@ ShmRegion::ShmRegion(std::string name, std::size_t size_bytes, unsigned mode)
   if (info.st_uid != ::geteuid()) {
     throw std::runtime_error("shared memory " + name_ + ": exists and belongs to uid " + std::to_string(info.st_uid) +
                              "; remove /dev/shm" + name_ + " or choose another shm.name_prefix");
+  }
+  // the lock lives as long as the descriptor: a second MC on the same names stops here instead
+  // of zeroing the objects under the first one (clients never lock)
+  if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
+    throw std::runtime_error("shared memory " + name_ + ": already served by another running MC; choose another "
+                             "shm.name_prefix");
   }
   // from here on the object is ours: remove it again when it cannot be set up
   auto fail_and_unlink = [this](const char* call) {
@@ -55,11 +69,13 @@ ShmRegion::ShmRegion(std::string name, std::size_t size_bytes, unsigned mode)
   if (mapped == MAP_FAILED) fail_and_unlink("mmap");
   data_ = mapped;
   std::memset(data_, 0, size_bytes_);
+  fd_ = guard.release();
 }
 
 ShmRegion::~ShmRegion() {
   ::munmap(data_, size_bytes_);
   ::shm_unlink(name_.c_str());
+  ::close(fd_);
 }
 
 }  // namespace cerebellum

@@ -1,5 +1,6 @@
 // One POSIX shared-memory object owned by the MC: created (or taken back from an earlier run of
-// the same user) with exact permission bits, sized, zeroed and mapped; unlinked on destruction.
+// the same user) with exact permission bits, sized, zeroed and mapped; locked against a second
+// MC on the same name; unlinked on destruction.
 #pragma once
 
 #include <cstddef>
@@ -24,6 +25,7 @@ class ShmRegion {
   std::string name_;
   std::size_t size_bytes_;
   void* data_ = nullptr;
+  int fd_ = -1;  // held open for the lock
 };
 
 }  // namespace cerebellum

@@ -1,0 +1,238 @@
+// Locomotion figures of the whole MC in lockstep simulation (commands through the state
+// machine, control on the robot's own estimate, truth from the simulator for scoring only):
+// velocity tracking, odometry drift, push recovery, slope and steps, a random-command soak,
+// and the real-time factor of the loop with locomotion. Prints a markdown table; writes the
+// velocity traces as CSV next to --benchmark_out (or into build/bench/results) for
+// bench/plot_locomotion.py.
+#include <algorithm>
+#include <chrono>
+#include <cstdlib>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <random>
+#include <string>
+#include <vector>
+
+#include "app/lockstep_client.hpp"
+
+namespace {
+
+using namespace cerebellum;
+namespace fs = std::filesystem;
+
+constexpr double kStandS = 3.0;
+
+McConfig config_for(const std::string& model_file) {
+  McConfig config = default_config();
+  config.startup = Startup::Off;
+  config.robot.model_path = std::string(CEREBELLUM_MODEL_DIR) + "/" + model_file;
+  return config;
+}
+
+double yaw_of(const GroundTruth& g) {
+  return std::atan2(2 * (g.quat[0] * g.quat[3] + g.quat[1] * g.quat[2]),
+                    1 - 2 * (g.quat[2] * g.quat[2] + g.quat[3] * g.quat[3]));
+}
+
+bool upright(const GroundTruth& g) {
+  const double up_z = 1 - 2 * (g.quat[1] * g.quat[1] + g.quat[2] * g.quat[2]);
+  return up_z > std::cos(0.6);
+}
+
+struct Row {
+  std::string name;
+  std::string commanded;
+  std::string measured;
+  std::string error;
+  std::string target;
+  bool pass;
+};
+
+// one robot, stood up by recovery stand, then driven
+struct Run {
+  explicit Run(const std::string& model = "cyberdog2.xml") : mc(config_for(model)), client(mc) {
+    client.run(high_level_command(ModeId::RecoveryStand, 0), kStandS);
+  }
+  Mc mc;
+  LockstepClient client;
+};
+
+// walk with one command; mean true / estimated body-frame velocity and yaw rate over the
+// last `measure_s` seconds; the trace goes to csv
+struct Tracking {
+  Eigen::Vector3d true_mean = Eigen::Vector3d::Zero();
+  Eigen::Vector3d estimated_mean = Eigen::Vector3d::Zero();
+  bool stayed_up = true;
+};
+
+Tracking track(Run& run, int gait, const Eigen::Vector3d& command, double settle_s, double measure_s,
+               std::ofstream& csv, const std::string& label) {
+  Tracking t;
+  int samples = 0;
+  double last_yaw = yaw_of(run.mc.backend().ground_truth());
+  const double start = run.mc.backend().time_s();
+  run.client.run(high_level_command(ModeId::Locomotion, gait, command.x(), command.y(), command.z()),
+                 settle_s + measure_s, [&](const CycleRecord& record) {
+                   const GroundTruth g = run.mc.backend().ground_truth();
+                   const double yaw = yaw_of(g);
+                   const double yaw_rate = std::remainder(yaw - last_yaw, 2 * M_PI) / 0.002;
+                   last_yaw = yaw;
+                   const double c = std::cos(yaw), s = std::sin(yaw);
+                   const Eigen::Vector3d truth(c * g.velocity_world[0] + s * g.velocity_world[1],
+                                               -s * g.velocity_world[0] + c * g.velocity_world[1], yaw_rate);
+                   const Eigen::Vector3d estimate(record.state.velocity_body.x(), record.state.velocity_body.y(),
+                                                  record.state.omega_world.z());
+                   t.stayed_up &= upright(g);
+                   const double elapsed = record.state.time_s - start;
+                   if (record.tick % 10 == 0) {
+                     csv << label << ',' << elapsed << ',' << command.x() << ',' << estimate.x() << ',' << truth.x()
+                         << ',' << command.y() << ',' << estimate.y() << ',' << truth.y() << ',' << command.z()
+                         << ',' << estimate.z() << ',' << truth.z() << '\n';
+                   }
+                   if (elapsed >= settle_s) {
+                     t.true_mean += truth;
+                     t.estimated_mean += estimate;
+                     ++samples;
+                   }
+                 });
+  t.true_mean /= samples;
+  t.estimated_mean /= samples;
+  return t;
+}
+
+std::string fmt(const char* format, double a) {
+  char buffer[64];
+  std::snprintf(buffer, sizeof(buffer), format, a);
+  return buffer;
+}
+
+Row tracking_row(const std::string& name, int gait, const Eigen::Vector3d& command, int axis, double limit,
+                 std::ofstream& csv) {
+  Run run;
+  const Tracking t = track(run, gait, command, 2.0, 5.0, csv, name);
+  const double wanted = command[axis];
+  const double error = std::abs(t.true_mean[axis] - wanted) / std::abs(wanted);
+  return {name + " (gait " + std::to_string(gait) + ")", fmt("%.2f", wanted),
+          fmt("%.3f", t.true_mean[axis]) + " (est " + fmt("%.3f", t.estimated_mean[axis]) + ")",
+          fmt("%.1f %%", 100 * error), fmt("<= %.0f %%", 100 * limit), t.stayed_up && error <= limit};
+}
+
+Row odometry_row(std::ofstream& csv) {
+  Run run;
+  const GroundTruth g0 = run.mc.backend().ground_truth();
+  const Eigen::Vector3d p0 = run.mc.loop().last_cycle().state.position_world;
+  track(run, 3, {0.8, 0.0, 0.0}, 0.0, 13.0, csv, "odometry 0.8 m/s");
+  const GroundTruth g1 = run.mc.backend().ground_truth();
+  const Eigen::Vector3d p1 = run.mc.loop().last_cycle().state.position_world;
+  const Eigen::Vector2d truth(g1.position[0] - g0.position[0], g1.position[1] - g0.position[1]);
+  const Eigen::Vector2d estimate = (p1 - p0).head<2>();
+  const double drift = (estimate - truth).norm() / truth.norm();
+  return {"odometry drift over a walk", fmt("%.1f m", truth.norm()), fmt("%.2f m error", (estimate - truth).norm()),
+          fmt("%.1f %%", 100 * drift), "<= 5 %", drift <= 0.05};
+}
+
+Row push_row() {
+  Run run;
+  bool up = true;
+  run.client.run(high_level_command(ModeId::Locomotion, 3), 2.0);
+  run.mc.backend().set_external_force({0.0, 150.0, 0.0});  // 150 N for 0.1 s = 15 N s sideways
+  run.client.run(high_level_command(ModeId::Locomotion, 3), 0.1,
+                 [&](const CycleRecord&) { up &= upright(run.mc.backend().ground_truth()); });
+  run.mc.backend().set_external_force({0.0, 0.0, 0.0});
+  run.client.run(high_level_command(ModeId::Locomotion, 3), 3.0,
+                 [&](const CycleRecord&) { up &= upright(run.mc.backend().ground_truth()); });
+  const auto v = run.mc.backend().ground_truth().velocity_world;
+  const bool settled = std::hypot(v[0], v[1]) < 0.2;
+  return {"lateral push 15 N s while trotting in place", "150 N x 0.1 s", up ? "stayed up" : "fell",
+          fmt("%.2f m/s after 3 s", std::hypot(v[0], v[1])), "no fall", up && settled};
+}
+
+Row terrain_row(const std::string& name, const std::string& model, double climb_m) {
+  Run run(model);
+  bool up = true;
+  run.client.run(high_level_command(ModeId::Locomotion, 27, 0.4), 14.0, [&](const CycleRecord& record) {
+    up &= upright(run.mc.backend().ground_truth());
+    if (std::getenv("TERRAIN_LOG") && record.tick % 250 == 0) {
+      const GroundTruth g = run.mc.backend().ground_truth();
+      std::fprintf(stderr, "%s t=%.1f x=%.2f z=%.3f est_h=%.3f\n", name.c_str(), record.state.time_s, g.position[0],
+                   g.position[2], record.state.height_m);
+    }
+  });
+  const GroundTruth g = run.mc.backend().ground_truth();
+  const bool climbed = g.position[2] > climb_m + 0.2;
+  return {name, "0.4 m/s, gait 27", fmt("x %.2f m", g.position[0]), fmt("z %.3f m", g.position[2]),
+          "climbs without falling", up && climbed};
+}
+
+Row soak_row(double minutes, unsigned seed) {
+  Run run;
+  std::mt19937 rng(seed);
+  const int gaits[] = {27, 3, 10, 26, 4, 2, 7};
+  std::uniform_int_distribution<int> pick(0, 6);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0), hold(1.0, 3.0);
+  bool up = true;
+  int commands = 0;
+  const double end = run.mc.backend().time_s() + 60.0 * minutes;
+  while (run.mc.backend().time_s() < end && up) {
+    const int gait = gaits[pick(rng)];
+    const GaitPattern p = *gait_pattern(gait);
+    Eigen::Vector3d v;
+    for (int axis = 0; axis < 3; ++axis) {
+      const double r = unit(rng);
+      v[axis] = r >= 0 ? r * p.velocity_max[axis] : -r * p.velocity_min[axis];
+    }
+    ++commands;
+    if (std::getenv("SOAK_LOG")) std::fprintf(stderr, "t=%.1f gait %d v %.2f %.2f %.2f\n", run.mc.backend().time_s(), gait, v.x(), v.y(), v.z());
+    run.client.run(high_level_command(ModeId::Locomotion, gait, v.x(), v.y(), v.z()), hold(rng),
+                   [&](const CycleRecord&) { up &= upright(run.mc.backend().ground_truth()); });
+  }
+  return {fmt("random-command soak, %.0f min", minutes), std::to_string(commands) + " commands",
+          up ? "no fall" : fmt("fell at %.0f s", run.mc.backend().time_s()), "", "no fall", up};
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  fs::path out_dir = "build/bench/results";
+  double soak_minutes = 10.0;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.rfind("--benchmark_out=", 0) == 0) out_dir = fs::path(arg.substr(16)).parent_path();
+    if (arg.rfind("--soak_minutes=", 0) == 0) soak_minutes = std::stod(arg.substr(15));
+  }
+  fs::create_directories(out_dir);
+  std::ofstream csv(out_dir / "locomotion_velocity.csv");
+  csv << "scenario,t,vx_cmd,vx_est,vx_true,vy_cmd,vy_est,vy_true,wz_cmd,wz_est,wz_true\n";
+
+  const auto wall_start = std::chrono::steady_clock::now();
+  std::vector<Row> rows;
+  rows.push_back(tracking_row("forward 0.3 m/s", 27, {0.3, 0, 0}, 0, 0.10, csv));
+  rows.push_back(tracking_row("forward 0.8 m/s", 3, {0.8, 0, 0}, 0, 0.10, csv));
+  rows.push_back(tracking_row("forward 1.2 m/s", 3, {1.2, 0, 0}, 0, 0.10, csv));
+  rows.push_back(tracking_row("forward 1.6 m/s", 10, {1.6, 0, 0}, 0, 0.10, csv));
+  rows.push_back(tracking_row("lateral 0.4 m/s", 3, {0, 0.4, 0}, 1, 0.15, csv));
+  rows.push_back(tracking_row("yaw 2.0 rad/s", 10, {0, 0, 2.0}, 2, 0.15, csv));
+  rows.push_back(odometry_row(csv));
+  rows.push_back(push_row());
+  rows.push_back(terrain_row("10-degree slope", "terrain_slope10.xml", 0.3));
+  rows.push_back(terrain_row("2 cm steps", "terrain_steps2cm.xml", 0.08));
+  const auto soak_start = std::chrono::steady_clock::now();
+  rows.push_back(soak_row(soak_minutes, 7));
+  const double soak_wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - soak_start).count();
+  const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - wall_start).count();
+
+  std::printf("| scenario | commanded | measured (true, est) | error | target | pass |\n|---|---|---|---|---|---|\n");
+  int failed = 0;
+  for (const Row& r : rows) {
+    std::printf("| %s | %s | %s | %s | %s | %s |\n", r.name.c_str(), r.commanded.c_str(), r.measured.c_str(),
+                r.error.c_str(), r.target.c_str(), r.pass ? "yes" : "NO");
+    failed += !r.pass;
+  }
+  std::printf("\nsoak real-time factor with locomotion (one core if pinned): %.1fx (%.0f robot s in %.1f s)\n",
+              (60.0 * soak_minutes + kStandS) / soak_wall, 60.0 * soak_minutes + kStandS, soak_wall);
+  std::printf("all scenarios: %.1f s wall; velocity traces: %s\n", wall,
+              (out_dir / "locomotion_velocity.csv").string().c_str());
+  return failed == 0 ? 0 : 1;
+}
