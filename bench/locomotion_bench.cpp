@@ -133,11 +133,11 @@ Row odometry_row(std::ofstream& csv) {
           fmt("%.1f %%", 100 * drift), "<= 5 %", drift <= 0.05};
 }
 
-Row push_row() {
+Row push_row(double impulse_n_s) {
   Run run;
   bool up = true;
   run.client.run(high_level_command(ModeId::Locomotion, 3), 2.0);
-  run.mc.backend().set_external_force({0.0, 150.0, 0.0});  // 150 N for 0.1 s = 15 N s sideways
+  run.mc.backend().set_external_force({0.0, impulse_n_s / 0.1, 0.0});  // for 0.1 s, sideways
   run.client.run(high_level_command(ModeId::Locomotion, 3), 0.1,
                  [&](const CycleRecord&) { up &= upright(run.mc.backend().ground_truth()); });
   run.mc.backend().set_external_force({0.0, 0.0, 0.0});
@@ -145,7 +145,8 @@ Row push_row() {
                  [&](const CycleRecord&) { up &= upright(run.mc.backend().ground_truth()); });
   const auto v = run.mc.backend().ground_truth().velocity_world;
   const bool settled = std::hypot(v[0], v[1]) < 0.2;
-  return {"lateral push 15 N s while trotting in place", "150 N x 0.1 s", up ? "stayed up" : "fell",
+  return {fmt("lateral push %.0f N s while trotting in place", impulse_n_s), fmt("%.0f N x 0.1 s", impulse_n_s * 10),
+          up ? "stayed up" : "fell",
           fmt("%.2f m/s after 3 s", std::hypot(v[0], v[1])), "no fall", up && settled};
 }
 
@@ -215,7 +216,7 @@ int main(int argc, char** argv) {
   rows.push_back(tracking_row("lateral 0.4 m/s", 3, {0, 0.4, 0}, 1, 0.15, csv));
   rows.push_back(tracking_row("yaw 2.0 rad/s", 10, {0, 0, 2.0}, 2, 0.15, csv));
   rows.push_back(odometry_row(csv));
-  rows.push_back(push_row());
+  for (double impulse : {5.0, 10.0, 15.0}) rows.push_back(push_row(impulse));
   rows.push_back(terrain_row("10-degree slope", "terrain_slope10.xml", 0.3));
   rows.push_back(terrain_row("2 cm steps", "terrain_steps2cm.xml", 0.08));
   const auto soak_start = std::chrono::steady_clock::now();
