@@ -82,7 +82,7 @@ static float position_of(const leg_state_t* leg, int joint) {
 }
 
 /* the stand-up trajectory at elapsed_s, starting from start[leg][joint] */
-static void stand_command(double elapsed_s, const double start[4][3], leg_control_t legs[4]) {
+static void stand_command(double elapsed_s, double start[4][3], leg_control_t legs[4]) {
   const int folding = elapsed_s < FOLD_S;
   const double fraction = folding ? smooth_step(elapsed_s / FOLD_S) : smooth_step((elapsed_s - FOLD_S) / RISE_S);
   memset(legs, 0, 4 * sizeof(leg_control_t));
@@ -182,7 +182,7 @@ int main(int argc, char** argv) {
       status = 1;
       break;
     }
-    stand_command(elapsed_s, (const double(*)[3])start_pose, command);
+    stand_command(elapsed_s, start_pose, command);
     if (lowlevel_write_command(shm, command)) {
       ++written;
     } else {

@@ -1,15 +1,25 @@
 #include "control/balance_controller.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include <Eigen/Geometry>
 
+#include "control/leg_gravity.hpp"
 #include "core/leg_kinematics.hpp"
 
 namespace cerebellum {
 namespace {
 
 constexpr double kGravity = 9.81;
+
+// world angular velocity of ZYX angles changing at rpy_rate
+Eigen::Vector3d angular_velocity_from_rpy_rate(const Eigen::Vector3d& rpy, const Eigen::Vector3d& rpy_rate) {
+  const double cp = std::cos(rpy.y()), sp = std::sin(rpy.y()), cy = std::cos(rpy.z()), sy = std::sin(rpy.z());
+  Eigen::Matrix3d map;
+  map << cy * cp, -sy, 0.0, sy * cp, cy, 0.0, -sp, 0.0, 1.0;
+  return map * rpy_rate;
+}
 
 Eigen::Vector3d clamp_norm(const Eigen::Vector3d& v, double max_norm) {
   const double norm = v.norm();
@@ -59,24 +69,30 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
 
   // desired wrench about the centre of mass
   const Eigen::Vector3d position_error = target.pose.position - estimated_pose_.position;
-  Eigen::Vector3d acceleration = config_.kp_position.cwiseProduct(position_error) -
-                                 config_.kd_position.cwiseProduct(estimated_velocity_);
+  const Eigen::Vector3d velocity_error = target.rate.position - estimated_velocity_;
+  Eigen::Vector3d acceleration = config_.kp_position.cwiseProduct(position_error) +
+                                 config_.kd_position.cwiseProduct(velocity_error);
   if (!target.hold_position_xy) {
     acceleration.head<2>() = -config_.kd_position.head<2>().cwiseProduct(estimated_velocity_.head<2>());
   }
   acceleration.head<2>() = clamp_norm(Eigen::Vector3d(acceleration.x(), acceleration.y(), 0.0),
                                       config_.max_position_acceleration).head<2>();
-  height_integral_ = std::clamp(height_integral_ + dt_s * config_.ki_height * position_error.z(),
-                                -config_.max_integral_height_acceleration, config_.max_integral_height_acceleration);
+  if (std::abs(position_error.z()) < config_.integrate_below_height_error_m) {
+    height_integral_ = std::clamp(height_integral_ + dt_s * config_.ki_height * position_error.z(),
+                                  -config_.max_integral_height_acceleration, config_.max_integral_height_acceleration);
+  }
   acceleration.z() += height_integral_;
   const Eigen::Matrix3d rotation_des = rotation_from_rpy(target.pose.rpy);
   const Eigen::AngleAxisd rotation_error(rotation_des * rotation.transpose());
   const Eigen::Vector3d angle_error = rotation_error.angle() * rotation_error.axis();
-  angle_integral_ = (angle_integral_ + dt_s * config_.ki_orientation.cwiseProduct(angle_error))
-                       .cwiseMax(-config_.max_integral_angular_acceleration)
-                       .cwiseMin(config_.max_integral_angular_acceleration);
+  if (angle_error.norm() < config_.integrate_below_angle_error_rad) {
+    angle_integral_ = (angle_integral_ + dt_s * config_.ki_orientation.cwiseProduct(angle_error))
+                          .cwiseMax(-config_.max_integral_angular_acceleration)
+                          .cwiseMin(config_.max_integral_angular_acceleration);
+  }
+  const Eigen::Vector3d omega_des = angular_velocity_from_rpy_rate(target.pose.rpy, target.rate.rpy);
   const Eigen::Vector3d angular_acceleration =
-      clamp_norm(config_.kp_orientation.cwiseProduct(angle_error) - config_.kd_orientation.cwiseProduct(omega),
+      clamp_norm(config_.kp_orientation.cwiseProduct(angle_error) + config_.kd_orientation.cwiseProduct(omega_des - omega),
                  config_.max_tilt_acceleration) +
       angle_integral_;
   const Eigen::Matrix3d inertia = rotation * config_.inertia_diag.asDiagonal() * rotation.transpose();
@@ -93,12 +109,14 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
   }
   solve_ok_ = distribution_.solve(feet_from_com, force_limit, wrench_, forces_) == qp::QpStatus::Solved;
 
-  // joints: forces on loaded legs, foot targets on legs in the air
+  // joints: forces on loaded legs, foot targets on legs in the air; every leg holds its own weight
+  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravity);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const std::size_t j = kJointsPerLeg * leg;
     const Vec3 q(state.q[j], state.q[j + 1], state.q[j + 2]);
+    const Vec3 hold = leg_gravity_torque(leg, q, gravity_body);
     if (stance[leg]) {
-      const Vec3 tau = -foot_jacobian(leg, q).transpose() * (rotation.transpose() * forces_[leg]);
+      const Vec3 tau = hold - foot_jacobian(leg, q).transpose() * (rotation.transpose() * forces_[leg]);
       for (std::size_t k = 0; k < kJointsPerLeg; ++k) {
         command.q_des[j + k] = state.q[j + k];
         command.qd_des[j + k] = 0.0;
@@ -117,7 +135,7 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
       command.qd_des[j + k] = 0.0;
       command.kp[j + k] = config_.swing_kp;
       command.kd[j + k] = config_.swing_kd;
-      command.tau_ff[j + k] = 0.0;
+      command.tau_ff[j + k] = hold[static_cast<Eigen::Index>(k)];
     }
   }
 }

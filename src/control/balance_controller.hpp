@@ -26,10 +26,12 @@ struct BalanceConfig {
   Eigen::Vector3d kp_orientation{200.0, 200.0, 150.0};
   Eigen::Vector3d kd_orientation{16.0, 16.0, 14.0};
   // integral action on height and orientation: removes the sag from leg weight and joint friction
-  double ki_height = 100.0;                   // 1/s^3
-  Eigen::Vector3d ki_orientation{80.0, 80.0, 80.0};  // 1/s^3
+  double ki_height = 300.0;                   // 1/s^3
+  Eigen::Vector3d ki_orientation{300.0, 300.0, 300.0};  // 1/s^3
   double max_integral_height_acceleration = 3.0;     // m/s^2
   double max_integral_angular_acceleration = 10.0;   // rad/s^2
+  double integrate_below_height_error_m = 0.03;      // larger errors (a big move under way) are not integrated
+  double integrate_below_angle_error_rad = 0.1;
   double max_tilt_acceleration = 30.0;  // rad/s^2 cap on the orientation PD
   double max_position_acceleration = 6.0;  // m/s^2 cap on the horizontal PD
   ForceDistributionConfig distribution;
@@ -41,6 +43,7 @@ struct BalanceConfig {
 // where the body should be and what each leg does (stance frame)
 struct BalanceTarget {
   BodyPose pose;
+  BodyPose rate;  // d/dt of pose: rpy rates and linear velocity (feedforward of a moving target)
   // false: horizontal velocity is damped but the position is not pulled back
   bool hold_position_xy = true;
   // per leg: the largest normal force it may carry; 0 with in_air set: foot follows swing_foot

@@ -1,6 +1,7 @@
 #include "control/pose_ramp.hpp"
 
 #include <algorithm>
+#include <cmath>
 
 #include "control/stand_up_controller.hpp"
 
@@ -16,6 +17,7 @@ double move_duration_s(const BodyPose& from, const BodyPose& to, const PoseSpeed
 
 void PoseRamp::hold(const BodyPose& pose) {
   from_ = goal_ = value_ = pose;
+  rate_ = BodyPose{};
   duration_s_ = elapsed_s_ = 0.0;
 }
 
@@ -33,6 +35,10 @@ void PoseRamp::advance(double dt_s) {
   const double s = smooth_step(fraction());
   value_.rpy = from_.rpy + (goal_.rpy - from_.rpy) * s;
   value_.position = from_.position + (goal_.position - from_.position) * s;
+  // d/dt of 0.5 - 0.5 cos(pi t / T)
+  const double ds_dt = arrived() ? 0.0 : 0.5 * 3.14159265358979323846 * std::sin(3.14159265358979323846 * fraction()) / duration_s_;
+  rate_.rpy = (goal_.rpy - from_.rpy) * ds_dt;
+  rate_.position = (goal_.position - from_.position) * ds_dt;
 }
 
 double PoseRamp::fraction() const { return duration_s_ > 0.0 ? std::clamp(elapsed_s_ / duration_s_, 0.0, 1.0) : 1.0; }

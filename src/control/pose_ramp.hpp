@@ -24,6 +24,8 @@ class PoseRamp {
   void advance(double dt_s);
 
   const BodyPose& value() const { return value_; }
+  // time derivative of value(): rpy rates and linear velocity
+  const BodyPose& rate() const { return rate_; }
   const BodyPose& goal() const { return goal_; }
   // 0..1 of the current move; 1 once arrived
   double fraction() const;
@@ -33,6 +35,7 @@ class PoseRamp {
   BodyPose from_;
   BodyPose goal_;
   BodyPose value_;
+  BodyPose rate_;
   double duration_s_ = 0.0;
   double elapsed_s_ = 0.0;
 };

@@ -61,6 +61,7 @@ void QpStand::compute(const RobotState& state, JointCommand& command) {
   target.pose.rpy = pose.rpy;
   target.pose.position.head<2>() = controller_.body_xy_for_com(com_xy, pose.rpy) + offset_scale * pose.position.head<2>();
   target.pose.position.z() = pose.position.z();
+  target.rate = ramp_.rate();
   controller_.compute(state, target, dt, command);
 }
 

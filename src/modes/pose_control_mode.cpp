@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "control/balance_controller.hpp"
+#include "control/leg_gravity.hpp"
 #include "core/leg_kinematics.hpp"
 
 namespace cerebellum {
@@ -108,11 +109,13 @@ void PoseControlMode::run(const RobotState& state, JointCommand& command) {
 
   // joints: inverse kinematics of the feet seen from the commanded body pose
   const Eigen::Matrix3d rotation_des = rotation_from_rpy(pose.rpy);
+  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -9.81);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const std::size_t j = kJointsPerLeg * leg;
     const LegIkResult ik = inverse_kinematics_in_body(leg, rotation_des.transpose() * (feet[leg] - pose.position));
     const Vec3 q(state.q[j], state.q[j + 1], state.q[j + 2]);
-    const Vec3 tau = -foot_jacobian(leg, q).transpose() * (rotation.transpose() * forces[leg]);
+    const Vec3 tau = leg_gravity_torque(leg, q, gravity_body) -
+                     foot_jacobian(leg, q).transpose() * (rotation.transpose() * forces[leg]);
     for (std::size_t k = 0; k < kJointsPerLeg; ++k) {
       const Eigen::Index e = static_cast<Eigen::Index>(k);
       command.q_des[j + k] = ik.q[e];

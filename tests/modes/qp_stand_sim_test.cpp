@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cstdio>
+#include <cstdlib>
 
 #include "modes/mode_sim.hpp"
 
@@ -19,6 +20,10 @@ HighLevelCommand qp_pose(double roll, double pitch, double yaw, double height) {
 }
 
 TEST(QpStandSim, ReachesRollPitchYawAndHeight) {
+  const double R = std::getenv("R") ? std::atof(std::getenv("R")) : 0.0;
+  const double P = std::getenv("P") ? std::atof(std::getenv("P")) : 0.0;
+  const double Y = std::getenv("Y") ? std::atof(std::getenv("Y")) : 0.0;
+  const double H = std::getenv("H") ? std::atof(std::getenv("H")) : 0.235;
   ModeSim sim;
   sim.run(3.0);
   ASSERT_EQ(sim.status().order_process_bar, 100);
@@ -33,13 +38,13 @@ TEST(QpStandSim, ReachesRollPitchYawAndHeight) {
                 ctl.estimated_pose().position.z(), rpy.x(), rpy.y(), rpy.z() - yaw0,
                 sim.status().order_process_bar, ctl.last_solve_ok(), ctl.demanded_wrench()(0), ctl.demanded_wrench()(1), ctl.demanded_wrench()(2),
                 ctl.demanded_wrench()(3), ctl.demanded_wrench()(4), ctl.demanded_wrench()(5), fsum.z());
-    if (i == 0) sim.send(qp_pose(0.2, 0.15, 0.2, 0.25), 0.1); else sim.run(0.1);
+    if (i == 0) sim.send(qp_pose(R, P, Y, H), 0.1); else sim.run(0.1);
   }
   const Eigen::Vector3d rpy = sim.true_rpy();
-  EXPECT_NEAR(rpy.x(), 0.2, 0.03);
-  EXPECT_NEAR(rpy.y(), 0.15, 0.03);
-  EXPECT_NEAR(rpy.z() - yaw0, 0.2, 0.03);
-  EXPECT_NEAR(sim.true_height(), 0.25, 0.01);
+  EXPECT_NEAR(rpy.x(), R, 0.03);
+  EXPECT_NEAR(rpy.y(), P, 0.03);
+  EXPECT_NEAR(rpy.z() - yaw0, Y, 0.03);
+  EXPECT_NEAR(sim.true_height(), H, 0.01);
 }
 
 }  // namespace

@@ -1,0 +1,68 @@
+#include "control/leg_gravity.hpp"
+
+#include <Eigen/Geometry>
+
+#include "core/joint_layout.hpp"
+#include "core/leg_kinematics.hpp"
+#include "core/robot_model.hpp"
+
+namespace cerebellum {
+namespace {
+
+// a link's mass (kg) and centre of mass in its joint frame (m)
+struct PointMass {
+  double mass_kg;
+  Eigen::Vector3d com;
+};
+
+constexpr double kRotorMassKg = 0.0567;
+constexpr double kHipRotorOffset = 0.0758;   // along the abad link, from the abad joint
+constexpr double kKneeRotorOffset = 0.0342;  // along the thigh, from the hip joint
+
+}  // namespace
+
+Eigen::Vector3d leg_gravity_torque(std::size_t leg, const Eigen::Vector3d& q, const Eigen::Vector3d& gravity_body) {
+  // the published centres are for a right leg: left legs mirror y
+  const double side = leg_side_sign(leg);
+  const auto link = [side](double x, double y_right, double z) { return Eigen::Vector3d(x, -side * y_right, z); };
+  const PointMass abad_link{0.354, link(-0.00392, -0.015, -0.000306)};
+  const PointMass hip_rotor{kRotorMassKg, link(0.0, -kHipRotorOffset, 0.0)};
+  const PointMass thigh{0.482, link(0.00212, -0.0212, -0.0184)};
+  const PointMass knee_rotor{kRotorMassKg, {0.0, 0.0, -kKneeRotorOffset}};
+  const PointMass shank{0.116, link(-0.0006, 4.72e-5, -0.0893)};
+
+  // joint frames in the body frame
+  const Eigen::Matrix3d r_abad = Eigen::AngleAxisd(q.x(), Eigen::Vector3d::UnitX()).toRotationMatrix();
+  const Eigen::Matrix3d r_thigh = r_abad * Eigen::AngleAxisd(q.y(), Eigen::Vector3d::UnitY()).toRotationMatrix();
+  const Eigen::Matrix3d r_shank = r_thigh * Eigen::AngleAxisd(q.z(), Eigen::Vector3d::UnitY()).toRotationMatrix();
+  const Eigen::Vector3d o_abad = hip_position(leg);
+  const Eigen::Vector3d o_hip = o_abad + r_abad * Eigen::Vector3d(0.0, side * robot::kAbadLength, 0.0);
+  const Eigen::Vector3d o_knee = o_hip + r_thigh * Eigen::Vector3d(0.0, 0.0, -robot::kThighLength);
+  const Eigen::Vector3d axis_abad = Eigen::Vector3d::UnitX();
+  const Eigen::Vector3d axis_pitch = r_abad * Eigen::Vector3d::UnitY();  // hip and knee
+
+  // each mass: its position and the joints that move it
+  struct Placed {
+    double mass_kg;
+    Eigen::Vector3d position;
+    int moved_by;  // 1: abad only, 2: abad and hip, 3: all three
+  };
+  const Placed masses[] = {
+      {abad_link.mass_kg, o_abad + r_abad * abad_link.com, 1},
+      {hip_rotor.mass_kg, o_abad + r_abad * hip_rotor.com, 1},
+      {thigh.mass_kg, o_hip + r_thigh * thigh.com, 2},
+      {knee_rotor.mass_kg, o_hip + r_thigh * knee_rotor.com, 2},
+      {shank.mass_kg, o_knee + r_shank * shank.com, 3},
+  };
+  // holding torque = -(generalised gravity force) = -sum m g . (axis x (p - o))
+  Eigen::Vector3d tau = Eigen::Vector3d::Zero();
+  for (const Placed& m : masses) {
+    const Eigen::Vector3d weight = m.mass_kg * gravity_body;
+    tau.x() -= weight.dot(axis_abad.cross(m.position - o_abad));
+    if (m.moved_by >= 2) tau.y() -= weight.dot(axis_pitch.cross(m.position - o_hip));
+    if (m.moved_by >= 3) tau.z() -= weight.dot(axis_pitch.cross(m.position - o_knee));
+  }
+  return tau;
+}
+
+}  // namespace cerebellum

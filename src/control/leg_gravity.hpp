@@ -1,0 +1,15 @@
+// Joint torques that hold a leg's own links against gravity (the G(q) of the leg as a chain
+// fixed to the trunk), from the published link masses and centres of mass
+// (robot-cyberdog2.md; right-leg values, y mirrored for left legs; rotors as point masses).
+#pragma once
+
+#include <cstddef>
+
+#include <Eigen/Core>
+
+namespace cerebellum {
+
+// q: abad, hip, knee (SDK convention); gravity_body: gravity vector in the body frame (m/s^2)
+Eigen::Vector3d leg_gravity_torque(std::size_t leg, const Eigen::Vector3d& q, const Eigen::Vector3d& gravity_body);
+
+}  // namespace cerebellum
