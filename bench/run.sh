@@ -12,5 +12,9 @@ for exe in "$root"/build/bench/*_bench; do
   name=$(basename "$exe")
   [[ -z "$filter" || "$name" == *"$filter"* ]] || continue
   echo "== $name"
-  taskset -c 1 "$exe" --benchmark_out="$out/$name.json" --benchmark_out_format=json
+  taskset -c 1 "$exe" --benchmark_out="$out/$name.json" --benchmark_out_format=json || echo "== $name: some targets were missed (see its table)"
 done
+# the locomotion benchmark's velocity traces as a picture
+if [[ -f "$out/locomotion_velocity.csv" ]]; then
+  /usr/bin/python3 "$root/bench/plot_locomotion.py" "$out/locomotion_velocity.csv" "$root/docs/images/locomotion_velocity.png"
+fi

@@ -6,7 +6,7 @@ packages=(
   liblcm-dev liblcm-bin libglib2.0-dev liblcm-java default-jdk-headless
   libmujoco-dev libeigen3-dev libtomlplusplus-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libbenchmark-dev libalglib-dev
-  iproute2 util-linux python3
+  iproute2 util-linux python3 python3-matplotlib
 )
 missing=()
 for p in "${packages[@]}"; do
