@@ -113,6 +113,14 @@ bool LinearKalmanFilter::correct(const LegObservations& legs) {
     innovation.head<3>() = legs[leg].foot_relative_world - (x.segment<3>(f) - x.head<3>());
     innovation.segment<3>(3) = legs[leg].body_velocity_world - x.segment<3>(3);
     innovation(6) = -x(f + 2);
+    // a velocity far outside what the filter expects is a slipping or not yet planted foot:
+    // that leg's velocity then counts as if the foot were untrusted
+    const Eigen::Vector3d velocity_innovation = innovation.segment<3>(3);
+    const double distance_sq = velocity_innovation.dot(s.block<3, 3>(3, 3).ldlt().solve(velocity_innovation));
+    if (distance_sq > config_.velocity_gate_chi2) {
+      ++gated_velocity_measurements_;
+      s.diagonal().segment<3>(3).array() += vel_var / config_.min_trust;
+    }
 
     // K = P H^T S^-1, kept as K^T = S^-1 (H P) since S and P are symmetric
     const Eigen::LDLT<Eigen::Matrix<double, kRowsPerLeg, kRowsPerLeg>> s_factor(s);

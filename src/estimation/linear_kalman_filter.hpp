@@ -5,6 +5,7 @@
 
 #include <Eigen/Core>
 #include <array>
+#include <cstdint>
 
 #include "core/joint_layout.hpp"
 
@@ -24,6 +25,9 @@ struct LinearKalmanFilterConfig {
   double foot_height_sigma_m = 0.005;
   // a leg's measurement variances are divided by max(trust, min_trust): trust 0 -> x 1/min_trust
   double min_trust = 1e-4;
+  // a leg's velocity whose normalised squared innovation exceeds this (chi-square, 3 degrees of
+  // freedom; 16.3 = 99.9 %) is treated as from an untrusted foot
+  double velocity_gate_chi2 = 16.3;
   // uncertainty right after initialize()
   double initial_position_sigma_m = 0.02;
   double initial_velocity_sigma_m_s = 0.1;
@@ -63,6 +67,8 @@ class LinearKalmanFilter {
   bool initialized() const { return initialized_; }
   // false before initialize() and after a skipped step, until the next accepted step
   bool valid() const { return valid_; }
+  // leg velocity measurements the innovation gate has set aside so far
+  std::uint64_t gated_velocity_measurements() const { return gated_velocity_measurements_; }
 
   Eigen::Vector3d position() const { return x_.segment<3>(0); }
   Eigen::Vector3d velocity() const { return x_.segment<3>(3); }
@@ -77,6 +83,7 @@ class LinearKalmanFilter {
   Covariance p_ = Covariance::Zero();
   bool initialized_ = false;
   bool valid_ = false;
+  std::uint64_t gated_velocity_measurements_ = 0;
 };
 
 }  // namespace cerebellum

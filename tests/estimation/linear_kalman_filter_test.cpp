@@ -279,3 +279,38 @@ TEST(LinearKalmanFilter, NonFiniteInputIsSkippedAndTheFilterStaysFinite) {
 
 }  // namespace
 }  // namespace cerebellum
+
+namespace cerebellum {
+namespace {
+
+// trunk at rest on planted feet while one leg reports a velocity 1.5 m/s off (a slipping foot)
+Eigen::Vector3d velocity_with_one_slipping_leg(const LinearKalmanFilterConfig& config, std::uint64_t* gated) {
+  const Eigen::Vector3d p(0.0, 0.0, 0.25);
+  const auto feet = planted_feet();
+  LinearKalmanFilter filter(config);
+  filter.initialize(p, Eigen::Vector3d::Zero(), feet);
+  for (int k = 0; k < 100; ++k) {
+    filter.predict(Eigen::Vector3d::Zero(), kDt, kAllPlanted);
+    LegObservations legs = observe(p, Eigen::Vector3d::Zero(), feet, kAllPlanted);
+    legs[2].body_velocity_world = Eigen::Vector3d(1.5, 0.0, 0.0);
+    filter.correct(legs);
+  }
+  *gated = filter.gated_velocity_measurements();
+  return filter.velocity();
+}
+
+TEST(LinearKalmanFilter, InnovationGateSetsAsideASlippingLegsVelocity) {
+  std::uint64_t gated = 0;
+  const Eigen::Vector3d gated_velocity = velocity_with_one_slipping_leg(LinearKalmanFilterConfig{}, &gated);
+  EXPECT_GE(gated, 90u);
+  EXPECT_LT(gated_velocity.norm(), 0.05);
+  // without the gate the same leg drags the estimate along
+  LinearKalmanFilterConfig ungated;
+  ungated.velocity_gate_chi2 = std::numeric_limits<double>::infinity();
+  const Eigen::Vector3d ungated_velocity = velocity_with_one_slipping_leg(ungated, &gated);
+  EXPECT_EQ(gated, 0u);
+  EXPECT_GT(ungated_velocity.x(), 0.2);
+}
+
+}  // namespace
+}  // namespace cerebellum
