@@ -3,6 +3,7 @@
 #include <array>
 #include <cmath>
 #include <cstdint>
+#include <iomanip>
 #include <map>
 #include <set>
 #include <sstream>
@@ -64,7 +65,7 @@ std::optional<double> parse_number(const std::string& text) {
 
 std::string format(double value) {
   std::ostringstream out;
-  out << value;
+  out << std::setprecision(10) << value;
   return out.str();
 }
 
@@ -165,14 +166,14 @@ void set_mode(robot_control_cmd_lcmt& command, int mode, int gait_id) {
 }
 
 void build_walk(const OptionValues& values, robot_control_cmd_lcmt& command) {
-  std::set<std::string> gait_names;
-  for (const GaitLimits& limits : kGaitLimits) gait_names.insert(std::to_string(limits.gait));
+  std::string gait_names;
+  for (const GaitLimits& limits : kGaitLimits) gait_names += (gait_names.empty() ? "" : ", ") + std::to_string(limits.gait);
   const long gait = values.integer("--gait", 0, 127, kDefaultWalkGait);
   const GaitLimits* limits = nullptr;
   for (const GaitLimits& candidate : kGaitLimits) {
     if (candidate.gait == gait) limits = &candidate;
   }
-  if (limits == nullptr) values.fail("--gait must be one of " + join(gait_names) + ", got " + std::to_string(gait));
+  if (limits == nullptr) values.fail("--gait must be one of " + gait_names + ", got " + std::to_string(gait));
   const std::string context = " (gait " + std::to_string(gait) + ")";
   set_mode(command, 11, static_cast<int>(gait));
   command.vel_des[0] = static_cast<float>(values.number("--vx", {limits->min[0], limits->max[0]}, (" m/s" + context).c_str(), 0.0));

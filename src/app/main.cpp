@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "app/cmd_command.hpp"
+#include "app/log_command.hpp"
 #include "app/sim_command.hpp"
 
 namespace {
@@ -13,7 +14,9 @@ constexpr const char* kUsage =
     "commands:\n"
     "  sim    run the MC on the simulated CyberDog2 (cerebellum sim --help)\n"
     "  cmd    send a high-level command to a running MC and keep it alive (cerebellum cmd --help)\n"
-    "  status print the MC's high-level responses and odometry (cerebellum status --help)\n";
+    "  status print the MC's high-level responses and odometry (cerebellum status --help)\n"
+    "  log    record the interface's LCM traffic, one lcm-logger per port (cerebellum log --help)\n"
+    "  replay play a recorded log back on its ports (cerebellum replay --help)\n";
 
 }  // namespace
 
@@ -27,6 +30,8 @@ int main(int argc, char** argv) {
   if (args[0] == "sim") return cerebellum::run_sim_command(rest);
   if (args[0] == "cmd") return cerebellum::run_cmd_command(rest);
   if (args[0] == "status") return cerebellum::run_status_command(rest);
-  std::fprintf(stderr, "cerebellum: unknown command '%s' (accepted: sim, cmd, status)\n%s", args[0].c_str(), kUsage);
+  if (args[0] == "log") return cerebellum::run_log_command(rest);
+  if (args[0] == "replay") return cerebellum::run_replay_command(rest);
+  std::fprintf(stderr, "cerebellum: unknown command '%s' (accepted: sim, cmd, status, log, replay)\n%s", args[0].c_str(), kUsage);
   return 2;
 }

@@ -9,6 +9,7 @@
 #include "app/mc_config.hpp"
 #include "app/sim_options.hpp"
 #include "app/mc.hpp"
+#include "app/record_tools.hpp"
 #include "app/stop_signal.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
@@ -56,13 +57,15 @@ int run_sim_command(const std::vector<std::string>& args) {
       highlevel.emplace(mc.machine(), config.highlevel, config.loop_period_s, stderr);
       loop.add_observer(*highlevel);
     }
+    SimTools tools(mc, options);
 
     std::printf("cerebellum ready: simulated CyberDog2 (%s), %.0f Hz loop, speed %s\n",
                 config.robot.model_path.c_str(), 1.0 / config.loop_period_s,
                 options.speed > 0.0 ? std::to_string(options.speed).c_str() : "max");
     std::fflush(stdout);
-    const RunStats stats = loop.run({options.duration_s, options.speed}, stop_signal.flag());
+    const RunStats stats = tools.run({options.duration_s, options.speed}, stop_signal.flag());
     reporter.finish();
+    const bool tools_ok = tools.finish(stdout, stderr);
     if (motor_sdk) motor_sdk->finish(stdout);
     if (highlevel) highlevel->finish(stdout);
     std::printf("cerebellum stopped: %.2f s robot time in %.2f s wall time (%.1fx real time), %llu ticks, "
@@ -71,6 +74,7 @@ int run_sim_command(const std::vector<std::string>& args) {
                 stats.wall_time_s > 0 ? stats.robot_time_s / stats.wall_time_s : 0.0,
                 static_cast<unsigned long long>(stats.ticks), static_cast<unsigned long long>(stats.late_substeps),
                 mc.backend().ground_truth().position[2]);
+    if (!tools_ok) return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cerebellum sim: %s\n", e.what());
     return 1;

@@ -13,6 +13,15 @@ struct SimOptions {
   std::string config_path;   // empty: built-in defaults
   std::optional<unsigned> seed;
   bool help = false;
+  // tools (docs/tools.md)
+  bool viewer = false;
+  std::string viewer_screenshot_path;  // the viewer's last frame, as .png
+  std::string record_path;             // headless video of the run
+  double record_fps = 30.0;
+  int record_width = 640;
+  int record_height = 480;
+  std::string telemetry_path;          // CSV
+  double telemetry_rate_hz = 100.0;
 };
 
 // throws std::invalid_argument naming the option and the accepted values

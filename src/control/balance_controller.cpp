@@ -35,7 +35,7 @@ Vector6d gravity_wrench(double mass_kg) {
 }
 
 BalanceController::BalanceController(const BalanceConfig& config)
-    : config_(config), distribution_(config.distribution) {}
+    : config_(config), distribution_(config.distribution), trim_(config.trim) {}
 
 void BalanceController::start(const RobotState& state) {
   frame_.anchor(state);
@@ -44,6 +44,7 @@ void BalanceController::start(const RobotState& state) {
   estimated_velocity_.setZero();
   height_integral_ = 0.0;
   angle_integral_.setZero();
+  trim_.reset();
 }
 
 Eigen::Vector2d BalanceController::body_xy_for_com(const Eigen::Vector2d& com_xy, const Eigen::Vector3d& rpy) const {
@@ -110,32 +111,23 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
   solve_ok_ = distribution_.solve(feet_from_com, force_limit, wrench_, forces_) == qp::QpStatus::Solved;
 
   // joints: forces on loaded legs, foot targets on legs in the air; every leg holds its own weight
+  const Eigen::Matrix3d rotation_legs = rotation_from_rpy(trim_.update(target.pose.rpy, estimated_pose_.rpy, dt_s));
   const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravity);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const std::size_t j = kJointsPerLeg * leg;
     const Vec3 q(state.q[j], state.q[j + 1], state.q[j + 2]);
-    const Vec3 hold = leg_gravity_torque(leg, q, gravity_body);
-    if (stance[leg]) {
-      const Vec3 tau = hold - foot_jacobian(leg, q).transpose() * (rotation.transpose() * forces_[leg]);
-      for (std::size_t k = 0; k < kJointsPerLeg; ++k) {
-        command.q_des[j + k] = state.q[j + k];
-        command.qd_des[j + k] = 0.0;
-        command.kp[j + k] = 0.0;
-        command.kd[j + k] = config_.stance_kd;
-        command.tau_ff[j + k] = tau[static_cast<Eigen::Index>(k)];
-      }
-      continue;
-    }
-    // foot target seen from the desired body pose
-    const Eigen::Vector3d foot_body =
-        rotation_des.transpose() * (target.swing_foot[leg] - target.pose.position);
-    const LegIkResult ik = inverse_kinematics_in_body(leg, foot_body);
+    Vec3 tau = leg_gravity_torque(leg, q, gravity_body);
+    if (stance[leg]) tau -= foot_jacobian(leg, q).transpose() * (rotation.transpose() * forces_[leg]);
+    // the foot where the target puts it, seen from the desired body pose
+    const Eigen::Vector3d foot = stance[leg] ? frame_.foothold(leg) : target.swing_foot[leg];
+    const LegIkResult ik = inverse_kinematics_in_body(leg, rotation_legs.transpose() * (foot - target.pose.position));
     for (std::size_t k = 0; k < kJointsPerLeg; ++k) {
-      command.q_des[j + k] = ik.q[static_cast<Eigen::Index>(k)];
+      const Eigen::Index e = static_cast<Eigen::Index>(k);
+      command.q_des[j + k] = ik.q[e];
       command.qd_des[j + k] = 0.0;
-      command.kp[j + k] = config_.swing_kp;
-      command.kd[j + k] = config_.swing_kd;
-      command.tau_ff[j + k] = hold[static_cast<Eigen::Index>(k)];
+      command.kp[j + k] = stance[leg] ? config_.stance_kp : config_.swing_kp;
+      command.kd[j + k] = stance[leg] ? config_.stance_kd : config_.swing_kd;
+      command.tau_ff[j + k] = tau[e];
     }
   }
 }

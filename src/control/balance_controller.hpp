@@ -8,6 +8,7 @@
 #include <Eigen/Core>
 
 #include "control/force_distribution.hpp"
+#include "control/orientation_trim.hpp"
 #include "control/stance_frame.hpp"
 #include "core/robot_model.hpp"
 #include "core/robot_state.hpp"
@@ -26,8 +27,8 @@ struct BalanceConfig {
   Eigen::Vector3d kp_orientation{200.0, 200.0, 150.0};
   Eigen::Vector3d kd_orientation{16.0, 16.0, 14.0};
   // integral action on height and orientation: removes the sag from leg weight and joint friction
-  double ki_height = 300.0;                   // 1/s^3
-  Eigen::Vector3d ki_orientation{300.0, 300.0, 300.0};  // 1/s^3
+  double ki_height = 100.0;                   // 1/s^3
+  Eigen::Vector3d ki_orientation{100.0, 100.0, 100.0};  // 1/s^3
   double max_integral_height_acceleration = 3.0;     // m/s^2
   double max_integral_angular_acceleration = 10.0;   // rad/s^2
   double integrate_below_height_error_m = 0.03;      // larger errors (a big move under way) are not integrated
@@ -35,9 +36,13 @@ struct BalanceConfig {
   double max_tilt_acceleration = 30.0;  // rad/s^2 cap on the orientation PD
   double max_position_acceleration = 6.0;  // m/s^2 cap on the horizontal PD
   ForceDistributionConfig distribution;
-  double stance_kd = 0.3;  // joint damping on loaded legs (N m s/rad)
+  // loaded legs also get a joint PD to the pose the target asks for: the joints' dry friction
+  // (0.1-0.25 N m) would otherwise hold the body up to ~0.1 rad away from it
+  double stance_kp = 25.0;
+  double stance_kd = 0.6;
   double swing_kp = 40.0;
   double swing_kd = 1.5;
+  OrientationTrimConfig trim;  // on the orientation the stance joints' PD is set for
 };
 
 // where the body should be and what each leg does (stance frame)
@@ -77,6 +82,7 @@ class BalanceController {
   BalanceConfig config_;
   StanceFrame frame_;
   ForceDistribution distribution_;
+  OrientationTrim trim_;
   LegMask was_in_air_{};
   BodyPose estimated_pose_;
   Eigen::Vector3d estimated_velocity_ = Eigen::Vector3d::Zero();

@@ -10,6 +10,7 @@ QpStand::QpStand(const QpStandConfig& config)
 void QpStand::start(const RobotState& state) {
   controller_.start(state);
   support_.reset();
+  for (Eigen::Vector3d& offset : foot_offsets_) offset.setZero();
   last_time_s_ = state.time_s;
   started_ = true;
   // the current pose in goal terms: offset from the centred stand, height
@@ -26,12 +27,13 @@ void QpStand::set_goal(const QpStandGoal& goal, const PoseSpeed& speed, double m
   goal_ = goal;
   goal_.pose.position.z() = std::min(goal_.pose.position.z(), config_.max_height_m);
   ramp_.move_to(goal_.pose, std::max(min_duration_s, move_duration_s(ramp_.value(), goal_.pose, speed)));
+  if (goal_.lifted_leg >= 0) foot_offsets_[static_cast<std::size_t>(goal_.lifted_leg)] = goal_.lifted_foot_offset;
   support_.request(goal_.lifted_leg);
 }
 
 
 double QpStand::progress() const {
-  return settled() ? 1.0 : std::min(ramp_.fraction(), 0.99);
+  return settled() ? 1.0 : std::min({ramp_.fraction(), support_.progress(), 0.99});
 }
 
 void QpStand::compute(const RobotState& state, JointCommand& command) {
@@ -56,7 +58,7 @@ void QpStand::compute(const RobotState& state, JointCommand& command) {
     const std::size_t l = static_cast<std::size_t>(leg);
     target.force_z_max_n[l] = support_.load() * config_.balance.distribution.force_z_max_n;
     target.in_air[l] = support_.in_air();
-    target.swing_foot[l] = frame.foothold(l) + support_.lift() * goal_.lifted_foot_offset;
+    target.swing_foot[l] = frame.foothold(l) + support_.lift() * foot_offsets_[l];
   }
   target.pose.rpy = pose.rpy;
   target.pose.position.head<2>() = controller_.body_xy_for_com(com_xy, pose.rpy) + offset_scale * pose.position.head<2>();

@@ -47,6 +47,8 @@ class QpStand {
   PoseRamp ramp_;
   SupportSequence support_;
   QpStandGoal goal_;
+  // per leg: the offset it was last asked to lift to (kept while it is put down again)
+  std::array<Eigen::Vector3d, kNumLegs> foot_offsets_{};
   double last_time_s_ = 0.0;
   bool started_ = false;
 };

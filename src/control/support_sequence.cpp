@@ -52,6 +52,12 @@ double SupportSequence::shift() const { return leg_ == kNoLeg ? 0.0 : smooth_ste
 double SupportSequence::load() const { return leg_ == kNoLeg ? 1.0 : 1.0 - smooth_step(phase_ - 1.0); }
 double SupportSequence::lift() const { return leg_ == kNoLeg ? 0.0 : smooth_step(phase_ - 2.0); }
 
+double SupportSequence::progress() const {
+  if (settled()) return 1.0;
+  // lifting runs the phase up to 3; putting down (also before lifting another leg) runs it down
+  return leg_ == requested_ ? phase_ / 3.0 : 1.0 - phase_ / 3.0;
+}
+
 bool SupportSequence::settled() const {
   if (requested_ == kNoLeg) return leg_ == kNoLeg;
   return leg_ == requested_ && phase_ >= 3.0;

@@ -33,6 +33,8 @@ class SupportSequence {
   bool in_air() const { return leg_ != kNoLeg && phase_ > 2.0; }
   // the request has been reached
   bool settled() const;
+  // 0..1 of the way to the request (1 once settled)
+  double progress() const;
 
  private:
   SupportSequenceConfig config_;

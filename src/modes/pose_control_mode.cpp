@@ -1,5 +1,6 @@
 #include "modes/pose_control_mode.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "control/balance_controller.hpp"
@@ -9,7 +10,7 @@
 namespace cerebellum {
 
 PoseControlMode::PoseControlMode(const PoseControlConfig& config)
-    : config_(config), support_(config.support), distribution_(config.distribution) {}
+    : config_(config), support_(config.support), distribution_(config.distribution), trim_(config.trim) {}
 
 const char* PoseControlMode::check(const HighLevelCommand& command) const {
   switch (command.gait_id) {
@@ -31,6 +32,8 @@ void PoseControlMode::enter(const RobotState& state, const HighLevelCommand& com
   frame_.anchor(state);
   ramp_.hold(frame_.anchored_pose());
   support_.reset();
+  trim_.reset();
+  for (Eigen::Vector3d& offset : foot_offsets_) offset.setZero();
   base_height_m_ = config_.ranges.default_height_m;
   last_time_s_ = state.time_s;
   started_ = true;
@@ -70,7 +73,7 @@ void PoseControlMode::update(const RobotState&, const HighLevelCommand& command)
   }
   const int leg = lifted_leg_from_contact(command.contact);
   support_.request(leg);
-  if (leg >= 0) lifted_foot_offset_ = lifted_foot_offset(command, leg, config_.foot_offset);
+  if (leg >= 0) foot_offsets_[static_cast<std::size_t>(leg)] = lifted_foot_offset(command, leg, config_.foot_offset);
   const BodyPose goal = goal_pose(command);
   const double needed_s = move_duration_s(ramp_.value(), goal, config_.speed);
   ramp_.move_to(goal, timed_ ? std::max(needed_s, command.duration * 1e-3) : needed_s);
@@ -95,7 +98,7 @@ void PoseControlMode::run(const RobotState& state, JointCommand& command) {
     LegMask support = kAllLegs;
     support[l] = false;
     pose.position.head<2>() += support_.shift() * (frame_.centroid(support) - frame_.centroid(kAllLegs)).head<2>();
-    feet[l] += support_.lift() * lifted_foot_offset_;
+    feet[l] += support_.lift() * foot_offsets_[l];
     force_limit[l] = support_.in_air() ? 0.0 : support_.load() * config_.distribution.force_z_max_n;
   }
 
@@ -108,7 +111,8 @@ void PoseControlMode::run(const RobotState& state, JointCommand& command) {
   distribution_.solve(feet_from_com, force_limit, gravity_wrench(config_.mass_kg), forces);
 
   // joints: inverse kinematics of the feet seen from the commanded body pose
-  const Eigen::Matrix3d rotation_des = rotation_from_rpy(pose.rpy);
+  // the legs are asked for the orientation that makes the IMU read the commanded one
+  const Eigen::Matrix3d rotation_des = rotation_from_rpy(trim_.update(pose.rpy, frame_.body_rpy(state), dt));
   const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -9.81);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const std::size_t j = kJointsPerLeg * leg;
@@ -131,7 +135,7 @@ int PoseControlMode::progress_percent() const {
   // a timed entry's time runs while it moves (the queue pauses only for unfinished switches)
   if (timed_) return 100;
   if (ramp_.arrived() && support_.settled()) return 100;
-  return std::min(static_cast<int>(std::floor(ramp_.fraction() * 100.0)), 99);
+  return std::min(static_cast<int>(std::floor(std::min(ramp_.fraction(), support_.progress()) * 100.0)), 99);
 }
 
 }  // namespace cerebellum

@@ -9,6 +9,7 @@
 #pragma once
 
 #include "control/force_distribution.hpp"
+#include "control/orientation_trim.hpp"
 #include "control/pose_ramp.hpp"
 #include "control/support_sequence.hpp"
 #include "core/robot_model.hpp"
@@ -27,6 +28,7 @@ struct PoseControlConfig {
   double mass_kg = robot::kTotalMassKg;
   Eigen::Vector3d com_in_body{0.0065, 0.0, -0.005};
   ForceDistributionConfig distribution;
+  OrientationTrimConfig trim;
 };
 
 class PoseControlMode final : public Mode {
@@ -53,7 +55,9 @@ class PoseControlMode final : public Mode {
   PoseRamp ramp_;
   SupportSequence support_;
   ForceDistribution distribution_;
-  Eigen::Vector3d lifted_foot_offset_ = Eigen::Vector3d::Zero();
+  OrientationTrim trim_;
+  // per leg: the offset it was last asked to lift to (kept while it is put down again)
+  std::array<Eigen::Vector3d, kNumLegs> foot_offsets_{};
   double base_height_m_ = 0.0;
   double last_time_s_ = 0.0;
   bool started_ = false;

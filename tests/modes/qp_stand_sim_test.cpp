@@ -64,3 +64,20 @@ TEST(QpStandSim, PrintCom) {
   std::printf("\n");
 }
 }
+namespace cerebellum {
+TEST(QpStandSim, LiftDebug) {
+  testing::ModeSim sim;
+  sim.run(3.0);
+  const int leg = std::getenv("LEG") ? std::atoi(std::getenv("LEG")) : 0;
+  HighLevelCommand c = testing::command(ModeId::QpStand, 0);
+  c.contact = 0x0F & ~(1 << leg);
+  for (int i = 0; i < 40; ++i) {
+    const Eigen::Vector3d rpy = sim.true_rpy();
+    const auto& st = sim.qp_stand.stand();
+    std::printf("t %.2f h %.3f rpy %.3f %.3f foot %.3f  bar %d ok %d phase sh %.2f ld %.2f lf %.2f f %.1f %.1f %.1f %.1f\n", sim.time_s(), sim.true_height(), rpy.x(), rpy.y(),
+                sim.true_foot(leg).z(), sim.status().order_process_bar, st.controller().last_solve_ok(), st.support().shift(), st.support().load(), st.support().lift(),
+                st.controller().foot_forces()[0].z(), st.controller().foot_forces()[1].z(), st.controller().foot_forces()[2].z(), st.controller().foot_forces()[3].z());
+    if (i == 0) sim.send(c, 0.1); else if (i == 25) { c.contact = 0x0F; sim.send(c, 0.1);} else sim.run(0.1);
+  }
+}
+}

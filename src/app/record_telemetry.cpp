@@ -1,0 +1,142 @@
+#include "app/record_telemetry.hpp"
+
+#include <algorithm>
+#include <cerrno>
+#include <chrono>
+#include <cmath>
+#include <cstring>
+#include <stdexcept>
+
+#include "app/viewer_snapshot.hpp"
+
+namespace cerebellum {
+namespace {
+
+constexpr const char* kLegNames[kNumLegs] = {"fr", "fl", "rr", "rl"};
+constexpr const char* kJointNames[kJointsPerLeg] = {"abad", "hip", "knee"};
+
+void append_number(std::string& line, double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, ",%.6g", value);
+  line += text;
+}
+
+}  // namespace
+
+std::array<double, 3> rpy_from_quat(const std::array<double, 4>& quat) {
+  const double w = quat[0];
+  const double x = quat[1];
+  const double y = quat[2];
+  const double z = quat[3];
+  const double roll = std::atan2(2.0 * (w * x + y * z), 1.0 - 2.0 * (x * x + y * y));
+  const double pitch = std::asin(std::clamp(2.0 * (w * y - z * x), -1.0, 1.0));
+  const double yaw = std::atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z));
+  return {roll, pitch, yaw};
+}
+
+TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, const HighLevelStatus& status) {
+  const RobotState& state = record.state;
+  TelemetryRow row;
+  row.time_s = state.time_s;
+  row.tick = record.tick;
+  row.mode = status.mode;
+  row.gait_id = status.gait_id;
+  row.switch_status = static_cast<int>(status.switch_status);
+  row.est_velocity = {state.velocity_body.x(), state.velocity_body.y(), state.omega_body.z()};
+  row.est_height_m = state.height_m;
+  row.est_rpy = {state.rpy.x(), state.rpy.y(), state.rpy.z()};
+  row.truth_velocity = planar_velocity_body(truth.quat, truth.velocity_world, truth.angular_velocity_body);
+  row.truth_z_m = truth.position[2];
+  row.truth_rpy = rpy_from_quat(truth.quat);
+  row.tau_nm = state.tau;
+  row.temperature_c = state.temperature_c;
+  return row;
+}
+
+std::string telemetry_header() {
+  std::string header =
+      "time_s,tick,mode,gait_id,switch_status,"
+      "est_vx_m_s,est_vy_m_s,est_wz_rad_s,est_height_m,est_roll_rad,est_pitch_rad,est_yaw_rad,"
+      "truth_vx_m_s,truth_vy_m_s,truth_wz_rad_s,truth_z_m,truth_roll_rad,truth_pitch_rad,truth_yaw_rad";
+  for (const char* quantity : {"tau", "temp"}) {
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+      for (std::size_t joint = 0; joint < kJointsPerLeg; ++joint) {
+        header += std::string(",") + quantity + "_" + kLegNames[leg] + "_" + kJointNames[joint] +
+                  (std::strcmp(quantity, "tau") == 0 ? "_nm" : "_c");
+      }
+    }
+  }
+  return header;
+}
+
+std::string telemetry_line(const TelemetryRow& row) {
+  char head[96];
+  std::snprintf(head, sizeof head, "%.4f,%llu,%d,%d,%d", row.time_s, static_cast<unsigned long long>(row.tick),
+                row.mode, row.gait_id, row.switch_status);
+  std::string line = head;
+  for (double v : row.est_velocity) append_number(line, v);
+  append_number(line, row.est_height_m);
+  for (double v : row.est_rpy) append_number(line, v);
+  for (double v : row.truth_velocity) append_number(line, v);
+  append_number(line, row.truth_z_m);
+  for (double v : row.truth_rpy) append_number(line, v);
+  for (double v : row.tau_nm) append_number(line, v);
+  for (double v : row.temperature_c) append_number(line, v);
+  return line;
+}
+
+TelemetryRecorder::TelemetryRecorder(const std::string& path, double rate_hz, const MujocoBackend& backend,
+                                     const HighLevelStatus& status)
+    : path_(path), rate_hz_(rate_hz), backend_(backend), status_(status) {
+  if (!(rate_hz > 0.0)) throw std::invalid_argument("telemetry: the rate must be > 0 Hz");
+  file_ = std::fopen(path.c_str(), "w");
+  if (!file_) throw std::runtime_error("telemetry: cannot create " + path + ": " + std::strerror(errno));
+  std::fprintf(file_, "%s\n", telemetry_header().c_str());
+  writer_ = std::thread([this] { drain(); });
+}
+
+TelemetryRecorder::~TelemetryRecorder() { finish(); }
+
+void TelemetryRecorder::on_cycle(const CycleRecord& record) {
+  const double time_s = backend_.time_s();
+  if (!started_) {
+    started_ = true;
+    start_s_ = time_s;
+  }
+  if (time_s < start_s_ + static_cast<double>(next_row_) / rate_hz_ - 1e-9) return;
+  // one row per tick at most: a rate above the loop's gives every tick
+  while (time_s >= start_s_ + static_cast<double>(next_row_) / rate_hz_ - 1e-9) ++next_row_;
+  ring_.try_push(telemetry_row(record, backend_.ground_truth(), status_));
+}
+
+void TelemetryRecorder::drain() {
+  const auto write_queued = [this] {
+    bool any = false;
+    while (auto row = ring_.try_pop()) {
+      any = true;
+      const std::string line = telemetry_line(*row);
+      if (std::fprintf(file_, "%s\n", line.c_str()) < 0) write_error_ = true;
+      ++rows_written_;
+    }
+    return any;
+  };
+  while (running_.load(std::memory_order_acquire)) {
+    if (!write_queued()) std::this_thread::sleep_for(std::chrono::milliseconds(2));
+  }
+  write_queued();
+}
+
+TelemetryResult TelemetryRecorder::finish() {
+  if (finished_) return result_;
+  finished_ = true;
+  running_.store(false, std::memory_order_release);
+  writer_.join();
+  const bool closed = std::fclose(file_) == 0;
+  file_ = nullptr;
+  result_.rows = rows_written_;
+  result_.dropped = ring_.dropped();
+  result_.ok = closed && !write_error_ && result_.dropped == 0;
+  return result_;
+}
+
+}  // namespace cerebellum

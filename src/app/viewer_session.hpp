@@ -1,0 +1,64 @@
+// `cerebellum sim --viewer`: the live window in the main thread, the control loop in its own
+// thread. The loop hands a snapshot (qpos, qvel, status) over a mutex each tick; the window sends
+// pushes back through a mailbox the loop applies between ticks; pause and slow motion restart
+// the paced run at the new speed.
+#pragma once
+
+#include <atomic>
+#include <memory>
+#include <mutex>
+#include <string>
+
+#include "app/control_loop.hpp"
+#include "app/viewer_snapshot.hpp"
+#include "viz/push_request.hpp"
+
+namespace cerebellum {
+
+class Mc;
+class ViewerWindow;
+
+// the loop side: a CycleObserver that copies snapshots out and applies the latest push
+class ViewerExchange final : public CycleObserver {
+ public:
+  ViewerExchange(MujocoBackend& backend, const HighLevelStatus& status);
+
+  // loop thread; never waits for the viewer (a busy mailbox is read next tick)
+  void on_cycle(const CycleRecord& record) override;
+  // viewer thread: the newest snapshot, false before the first tick
+  bool latest(SimSnapshot& out);
+  // viewer thread
+  void set_push(const PushRequest& request);
+
+ private:
+  MujocoBackend& backend_;
+  SnapshotCapture capture_;
+  PushSpring spring_;
+  SimSnapshot staging_;  // loop thread
+  bool pushing_ = false;  // loop thread: a force is on the trunk
+  std::mutex snapshot_mutex_;
+  SimSnapshot shared_;
+  bool has_snapshot_ = false;
+  std::mutex push_mutex_;
+  PushRequest push_;
+};
+
+class ViewerSession {
+ public:
+  // opens the window (throws std::runtime_error when there is no display) and attaches to the loop
+  explicit ViewerSession(Mc& mc);
+  ~ViewerSession();
+  ViewerSession(const ViewerSession&) = delete;
+  ViewerSession& operator=(const ViewerSession&) = delete;
+
+  // runs until the duration is reached, the window closes or stop is set; screenshot_png: when
+  // not empty, the last frame is saved there (throws std::runtime_error when that fails)
+  RunStats run(const RunOptions& options, const std::atomic<bool>& stop, const std::string& screenshot_png);
+
+ private:
+  Mc& mc_;
+  std::unique_ptr<ViewerWindow> window_;
+  ViewerExchange exchange_;
+};
+
+}  // namespace cerebellum

@@ -1,0 +1,47 @@
+#include "app/viewer_snapshot.hpp"
+
+#include <mujoco/mujoco.h>
+
+#include <Eigen/Geometry>
+#include <algorithm>
+
+namespace cerebellum {
+
+SnapshotCapture::SnapshotCapture(const MujocoBackend& backend, const HighLevelStatus& status)
+    : backend_(backend), status_(status),
+      trunk_body_(std::max(0, mj_name2id(backend.model(), mjOBJ_BODY, "trunk"))) {}
+
+SimSnapshot SnapshotCapture::sized_snapshot() const {
+  SimSnapshot snapshot;
+  snapshot.qpos.assign(static_cast<std::size_t>(backend_.model()->nq), 0.0);
+  snapshot.qvel.assign(static_cast<std::size_t>(backend_.model()->nv), 0.0);
+  return snapshot;
+}
+
+void SnapshotCapture::capture(const CycleRecord& record, SimSnapshot& out) const {
+  const mjModel* model = backend_.model();
+  const mjData* data = backend_.data();
+  out.tick = record.tick;
+  out.time_s = data->time;
+  std::copy_n(data->qpos, std::min(out.qpos.size(), static_cast<std::size_t>(model->nq)), out.qpos.begin());
+  std::copy_n(data->qvel, std::min(out.qvel.size(), static_cast<std::size_t>(model->nv)), out.qvel.begin());
+  for (int k = 0; k < 3; ++k) out.external_force_n[k] = data->xfrc_applied[6 * trunk_body_ + k];
+  out.status = status_;
+  const RobotState& state = record.state;
+  out.estimated_velocity_body = {state.velocity_body.x(), state.velocity_body.y(), state.omega_body.z()};
+  out.estimated_height_m = state.height_m;
+  const GroundTruth truth = backend_.ground_truth();
+  out.true_velocity_body = planar_velocity_body(truth.quat, truth.velocity_world, truth.angular_velocity_body);
+  out.true_height_m = truth.position[2];
+}
+
+std::array<double, 3> planar_velocity_body(const std::array<double, 4>& quat,
+                                           const std::array<double, 3>& velocity_world,
+                                           const std::array<double, 3>& angular_velocity_body) {
+  const Eigen::Quaterniond body_to_world(quat[0], quat[1], quat[2], quat[3]);
+  const Eigen::Vector3d v_body = body_to_world.normalized().conjugate() *
+                                 Eigen::Vector3d(velocity_world[0], velocity_world[1], velocity_world[2]);
+  return {v_body.x(), v_body.y(), angular_velocity_body[2]};
+}
+
+}  // namespace cerebellum

@@ -1,0 +1,25 @@
+// A push on the trunk asked for in the viewer: while active, a spring pulls the trunk's centre of
+// mass towards target_world. The loop thread turns it into a force between ticks.
+#pragma once
+
+#include <array>
+
+namespace cerebellum {
+
+struct PushRequest {
+  bool active = false;
+  std::array<double, 3> target_world{};
+};
+
+struct PushSpring {
+  double stiffness_n_per_m = 400.0;
+  double damping_n_s_per_m = 40.0;
+  double max_force_n = 200.0;
+};
+
+// world-frame force on the trunk: stiffness * (target - com) - damping * com_velocity, its
+// magnitude limited to max_force_n; zero when the request is not active
+std::array<double, 3> push_force(const PushRequest& request, const std::array<double, 3>& com_world,
+                                 const std::array<double, 3>& com_velocity_world, const PushSpring& spring);
+
+}  // namespace cerebellum

@@ -1,0 +1,28 @@
+// What the tools draw and log of one control tick: a copy of the simulator's state plus the MC's
+// status, taken in the loop thread and handed to a viewer, recorder or logger thread.
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <vector>
+
+#include "modes/high_level_command.hpp"
+
+namespace cerebellum {
+
+struct SimSnapshot {
+  std::uint64_t tick = 0;
+  double time_s = 0.0;
+  std::vector<double> qpos;  // sized to the model's nq once, then copied into
+  std::vector<double> qvel;  // sized to the model's nv
+  std::array<double, 3> external_force_n{};  // the push on the trunk (world frame)
+  HighLevelStatus status;
+  // the estimator's view
+  std::array<double, 3> estimated_velocity_body{};  // vx, vy (m/s), yaw rate (rad/s)
+  double estimated_height_m = 0.0;
+  // simulator truth, labelled as such wherever shown
+  std::array<double, 3> true_velocity_body{};  // vx, vy (m/s), yaw rate (rad/s)
+  double true_height_m = 0.0;
+};
+
+}  // namespace cerebellum

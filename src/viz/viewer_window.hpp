@@ -1,0 +1,59 @@
+// The live 3D window (GLFW + MuJoCo's renderer). Runs in the main thread and only draws
+// snapshots; what the person asks for (pause, slow motion, quit, a push) is read back by the
+// caller. Mouse as in MuJoCo's simulate: left drag rotates, right drag moves, scroll zooms;
+// ctrl + right drag pulls the trunk (horizontal plane; with shift, vertical plane).
+#pragma once
+
+#include <memory>
+#include <string>
+
+#include "viz/push_request.hpp"
+#include "viz/scene_renderer.hpp"
+
+struct GLFWwindow;
+
+namespace cerebellum {
+
+struct ViewerControls {
+  bool paused = false;
+  bool slow_motion = false;  // 0.25x the run's speed
+  bool quit = false;         // Esc or the window closed
+};
+
+class ViewerWindow {
+ public:
+  // throws std::runtime_error naming the reason when no window can be opened (e.g. no display)
+  ViewerWindow(const mjModel* model, const std::string& title, int width = 1280, int height = 800);
+  ~ViewerWindow();
+  ViewerWindow(const ViewerWindow&) = delete;
+  ViewerWindow& operator=(const ViewerWindow&) = delete;
+
+  // handles pending keyboard and mouse events
+  void poll();
+  const ViewerControls& controls() const { return controls_; }
+  // true once after pause or slow motion changed (the loop must take up the new pace)
+  bool take_pace_change();
+  PushRequest push() const;
+
+  // draws the snapshot with the status overlay and shows it
+  void draw(const SimSnapshot& snapshot, const std::string& run_state);
+  // draws like draw() and also saves the frame to a .png file (through ffmpeg); false on failure
+  bool draw_and_save(const SimSnapshot& snapshot, const std::string& run_state, const std::string& png_path);
+
+ private:
+  static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
+  static void on_mouse_button(GLFWwindow* window, int button, int action, int mods);
+  static void on_cursor(GLFWwindow* window, double x, double y);
+  static void on_scroll(GLFWwindow* window, double dx, double dy);
+  mjrRect render(const SimSnapshot& snapshot, const std::string& run_state);
+
+  GLFWwindow* window_ = nullptr;
+  std::unique_ptr<SceneRenderer> renderer_;
+  mjvPerturb perturbation_;
+  ViewerControls controls_;
+  bool pace_changed_ = false;
+  double cursor_x_ = 0.0;
+  double cursor_y_ = 0.0;
+};
+
+}  // namespace cerebellum
