@@ -1,11 +1,11 @@
 #!/usr/bin/env bash
-# The main job on a fresh machine: install dependencies, build, and run the MC on the simulated
-# CyberDog2 (it stands up and holds, printing height and joint state once a second).
-#   scripts/demo.sh [cerebellum sim options]   (default: --speed 1 --duration 10)
+# The main job on a fresh machine: install dependencies, build, then run the demo: the MC on the
+# simulated CyberDog2, driven through the real LCM high-level interface by a demo client (stand,
+# pose, walk a square, turn, lie down), inside a private network namespace. Writes a video, a
+# telemetry log and plots under build/demo/ and prints their paths.
+#   scripts/demo.sh [--short]      (--short: a smaller tour, used by the tests)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 "$root/scripts/install_deps.sh"
-"$root/scripts/build.sh" cerebellum
-args=("$@")
-[[ ${#args[@]} -gt 0 ]] || args=(--speed 1 --duration 10)
-exec "$root/scripts/netns_run.sh" "$root/build/src/app/cerebellum" sim --config "$root/config/cerebellum.yaml" "${args[@]}"
+"$root/scripts/build.sh" cerebellum cerebellum_demo_tour
+exec "$root/scripts/netns_run.sh" "$root/scripts/demo_run.sh" "$@"

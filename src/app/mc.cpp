@@ -37,6 +37,7 @@ Mc::Mc(const McConfig& config)
       backend_(config.robot),
       pure_damper_(pure_damper_config(config)),
       recovery_stand_(config.stand_up),
+      lifted_(default_lifted_config()),
       walking_(walking_config(config), std::make_unique<qp::GoldfarbIdnaniSolver>(), &estimator_),
       locomotion_(gaits_),
       machine_(config.loop_period_s, startup_command(config.startup)),
@@ -45,6 +46,9 @@ Mc::Mc(const McConfig& config)
   machine_.add_mode(off_);
   machine_.add_mode(pure_damper_);
   machine_.add_mode(recovery_stand_);
+  machine_.add_mode(qp_stand_);
+  machine_.add_mode(pose_control_);
+  machine_.add_mode(lifted_);
   // every gait of the table runs on the MPC locomotion controller
   for (int gait : {1, 2, 3, 4, 7, 10, 26, 27, 31}) gaits_.add(gait, walking_);
   machine_.add_mode(locomotion_);

@@ -7,9 +7,12 @@
 #include "backend/mujoco_backend.hpp"
 #include "estimation/body_state_estimator.hpp"
 #include "modes/high_level_machine.hpp"
+#include "modes/lifted_mode.hpp"
 #include "modes/locomotion_mode.hpp"
 #include "modes/walking_gaits.hpp"
 #include "modes/passive_modes.hpp"
+#include "modes/pose_control_mode.hpp"
+#include "modes/qp_stand_mode.hpp"
 #include "modes/recovery_stand_mode.hpp"
 #include "modes/source_arbiter.hpp"
 
@@ -39,6 +42,9 @@ class Mc {
   OffMode off_;
   PureDamperMode pure_damper_;
   RecoveryStandMode recovery_stand_;
+  QpStandMode qp_stand_;
+  PoseControlMode pose_control_;
+  LiftedMode lifted_;
   GaitRegistry gaits_;
   WalkingGaits walking_;
   LocomotionMode locomotion_;

@@ -59,7 +59,9 @@ void VideoRecorder::render_thread(std::promise<void>& ready) {
   std::unique_ptr<FfmpegPipe> pipe;
   try {
     context = std::make_unique<EglOffscreenContext>();
-    renderer = std::make_unique<SceneRenderer>(backend_.model(), options_.width, options_.height);
+    // text about a fifth of the height at 640x480 and below, smaller in small videos
+    const int font_scale = options_.height <= 300 ? mjFONTSCALE_50 : mjFONTSCALE_100;
+    renderer = std::make_unique<SceneRenderer>(backend_.model(), options_.width, options_.height, font_scale);
     renderer->use_offscreen_buffer();
     pipe = std::make_unique<FfmpegPipe>(options_.path, options_.width, options_.height, options_.fps);
   } catch (...) {

@@ -42,6 +42,7 @@ void BalanceController::start(const RobotState& state) {
   was_in_air_ = {};
   estimated_pose_ = frame_.anchored_pose();
   estimated_velocity_.setZero();
+  for (Eigen::Vector3d& force : forces_) force.setZero();
   height_integral_ = 0.0;
   angle_integral_.setZero();
   trim_.reset();
@@ -108,10 +109,15 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
     feet_from_com[leg] = rotation * state.foot_position_body[leg] - com;
     force_limit[leg] = stance[leg] ? target.force_z_max_n[leg] : 0.0;
   }
-  solve_ok_ = distribution_.solve(feet_from_com, force_limit, wrench_, forces_) == qp::QpStatus::Solved;
+  if (distribution_.solve(feet_from_com, force_limit, wrench_, solved_forces_) == qp::QpStatus::Solved) {
+    forces_ = solved_forces_;
+  }
 
   // joints: forces on loaded legs, foot targets on legs in the air; every leg holds its own weight
   const Eigen::Matrix3d rotation_legs = rotation_from_rpy(trim_.update(target.pose.rpy, estimated_pose_.rpy, dt_s));
+  // without position hold the joints follow the body where a push has left it
+  Eigen::Vector3d body_for_legs = target.pose.position;
+  if (!target.hold_position_xy) body_for_legs.head<2>() = estimated_pose_.position.head<2>();
   const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravity);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const std::size_t j = kJointsPerLeg * leg;
@@ -120,7 +126,7 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
     if (stance[leg]) tau -= foot_jacobian(leg, q).transpose() * (rotation.transpose() * forces_[leg]);
     // the foot where the target puts it, seen from the desired body pose
     const Eigen::Vector3d foot = stance[leg] ? frame_.foothold(leg) : target.swing_foot[leg];
-    const LegIkResult ik = inverse_kinematics_in_body(leg, rotation_legs.transpose() * (foot - target.pose.position));
+    const LegIkResult ik = inverse_kinematics_in_body(leg, rotation_legs.transpose() * (foot - body_for_legs));
     for (std::size_t k = 0; k < kJointsPerLeg; ++k) {
       const Eigen::Index e = static_cast<Eigen::Index>(k);
       command.q_des[j + k] = ik.q[e];

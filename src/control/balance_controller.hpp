@@ -1,6 +1,9 @@
-// Force-based stand (the QP stand): a PD on the body pose gives the wrench the ground must
-// apply, ForceDistribution shares it among the loaded feet, and the legs make those forces with
-// tau = -J' R' f. Legs in the air follow a foot target with a joint PD.
+// Force-based stand (the QP stand): a PID on the body pose (position, velocity and a small
+// integral on height and orientation) gives the wrench the ground must apply, ForceDistribution
+// shares it among the loaded feet, and the legs make those forces with tau = G(q) - J' R' f
+// (G: the leg's own weight). Loaded legs also get a soft joint PD to the pose the target asks for
+// (the joints' dry friction would otherwise hold the body off target); legs in the air follow a
+// foot target with a stiffer joint PD. The pose is estimated from the stance feet's kinematics.
 #pragma once
 
 #include <array>
@@ -67,14 +70,8 @@ class BalanceController {
   void compute(const RobotState& state, const BalanceTarget& target, double dt_s, JointCommand& command);
 
   const StanceFrame& frame() const { return frame_; }
-  const BalanceConfig& config() const { return config_; }
-  // estimates of the last compute (stance frame)
+  // the body pose estimated at the last compute (stance frame)
   const BodyPose& estimated_pose() const { return estimated_pose_; }
-  const Eigen::Vector3d& estimated_velocity() const { return estimated_velocity_; }
-  // the wrench demanded and the forces chosen at the last compute
-  const Vector6d& demanded_wrench() const { return wrench_; }
-  const std::array<Eigen::Vector3d, kNumLegs>& foot_forces() const { return forces_; }
-  bool last_solve_ok() const { return solve_ok_; }
   // body origin that puts the centre of mass at com_xy with the given orientation (stance frame)
   Eigen::Vector2d body_xy_for_com(const Eigen::Vector2d& com_xy, const Eigen::Vector3d& rpy) const;
 
@@ -89,8 +86,9 @@ class BalanceController {
   Vector6d wrench_ = Vector6d::Zero();
   double height_integral_ = 0.0;                           // m/s^2
   Eigen::Vector3d angle_integral_ = Eigen::Vector3d::Zero();  // rad/s^2
+  // forces of the last successful solve: kept when a solve fails
   std::array<Eigen::Vector3d, kNumLegs> forces_{};
-  bool solve_ok_ = false;
+  std::array<Eigen::Vector3d, kNumLegs> solved_forces_{};
 };
 
 // wrench that keeps a body of this mass at rest against gravity with no torque

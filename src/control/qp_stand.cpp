@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "control/pose_reach.hpp"
+
 namespace cerebellum {
 
 QpStand::QpStand(const QpStandConfig& config)
@@ -26,6 +28,18 @@ void QpStand::start(const RobotState& state) {
 void QpStand::set_goal(const QpStandGoal& goal, const PoseSpeed& speed, double min_duration_s) {
   goal_ = goal;
   goal_.pose.position.z() = std::min(goal_.pose.position.z(), config_.max_height_m);
+  // a pose the legs cannot hold is cut back towards the level, centred stand at that height
+  const StanceFrame& frame = controller_.frame();
+  const Eigen::Vector2d com_xy = frame.centroid(kAllLegs).head<2>();
+  BodyPose level;
+  level.position << controller_.body_xy_for_com(com_xy, level.rpy), goal_.pose.position.z();
+  BodyPose wanted = goal_.pose;
+  wanted.position.head<2>() += controller_.body_xy_for_com(com_xy, wanted.rpy);
+  Footholds footholds{};
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) footholds[leg] = frame.foothold(leg);
+  const double fraction = reachable_fraction(level, wanted, footholds, kAllLegs);
+  goal_.pose.rpy *= fraction;
+  goal_.pose.position.head<2>() *= fraction;
   ramp_.move_to(goal_.pose, std::max(min_duration_s, move_duration_s(ramp_.value(), goal_.pose, speed)));
   if (goal_.lifted_leg >= 0) foot_offsets_[static_cast<std::size_t>(goal_.lifted_leg)] = goal_.lifted_foot_offset;
   support_.request(goal_.lifted_leg);

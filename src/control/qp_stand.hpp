@@ -37,9 +37,7 @@ class QpStand {
   // 0..1: the pose move and the leg change done
   double progress() const;
   bool settled() const { return ramp_.arrived() && support_.settled(); }
-  const QpStandGoal& goal() const { return goal_; }
   const BalanceController& controller() const { return controller_; }
-  const SupportSequence& support() const { return support_; }
 
  private:
   QpStandConfig config_;

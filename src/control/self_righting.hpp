@@ -1,10 +1,11 @@
-// Turning a robot that lies on its side or on its back over onto its belly, by joint-space
-// keyframes: the legs of the lower side swing round to point over the back and push the ground
-// there while the upper legs reach out on the belly side to carry the centre of mass over.
-// On its back, the legs of one side first push the robot onto that side's opposite flank.
+// Turning a robot that lies on its back or side over onto its belly, by joint-space keyframes.
+// The roll goes over one flank: the legs of the other side swing over the back and lever that
+// side up with a quick push, the legs of the rolling side then point over the back so the body
+// tips past them onto the belly, and the levering legs reach out on the belly side to carry the
+// centre of mass over. (Found by search in the simulated model: a robot on its side with folded
+// legs falls onto its back, so every roll starts from the back or from a flank.)
 #pragma once
 
-#include <array>
 #include <vector>
 
 #include <Eigen/Geometry>
@@ -18,15 +19,11 @@ enum class BodyRest { Upright, OnLeftSide, OnRightSide, UpsideDown };
 BodyRest body_rest(const Eigen::Quaterniond& body_to_world);
 
 struct SelfRightingConfig {
-  double kp = 60.0;
+  double kp = 100.0;
   double kd = 1.5;
-  double fold_s = 0.6;    // legs folded close to the body
-  double reach_s = 0.6;   // lower legs over the back, upper legs out on the belly side
-  double push_s = 0.35;   // lower legs push the ground behind the back
-  double hold_s = 0.8;    // let the body fall over
 };
 
-// one pose of the legs held after a move of duration_s
+// one pose of the legs, reached by a smooth move of duration_s
 struct JointKeyframe {
   JointArray<double> q{};
   double duration_s = 0.0;
@@ -35,20 +32,14 @@ struct JointKeyframe {
 class SelfRighting final : public MotionController {
  public:
   explicit SelfRighting(const SelfRightingConfig& config = {});
-  // plan the roll for how the body rests now; upside down it first rolls onto the side given
-  // by roll_to (OnLeftSide or OnRightSide)
-  void start(const RobotState& state, BodyRest rest, BodyRest roll_to);
+  // plan a roll over the given flank (OnLeftSide or OnRightSide: that side ends up down first)
+  void start(BodyRest roll_over);
   void compute(const RobotState& state, JointCommand& command) override;
-  // 0..1 through the planned keyframes
+  // 0..1 through the keyframes
   double progress() const;
   bool done() const { return progress() >= 1.0; }
 
  private:
-  // a keyframe given for the robot on its right side (right legs below); mirrored when the left
-  // side is below (abad angles change sign)
-  void add(const std::array<double, 3>& right_legs, const std::array<double, 3>& left_legs, bool mirror,
-           double duration_s);
-
   SelfRightingConfig config_;
   std::vector<JointKeyframe> keyframes_;  // capacity reserved once
   JointArray<double> start_q_{};

@@ -5,6 +5,7 @@
 
 #include "control/balance_controller.hpp"
 #include "control/leg_gravity.hpp"
+#include "control/pose_reach.hpp"
 #include "core/leg_kinematics.hpp"
 
 namespace cerebellum {
@@ -60,7 +61,13 @@ BodyPose PoseControlMode::goal_pose(const HighLevelCommand& command) {
   const Eigen::Vector3d centre(r.ctrl_point.clamp(command.ctrl_point[0]), r.ctrl_point.clamp(command.ctrl_point[1]),
                                r.ctrl_point.clamp(command.ctrl_point[2]));
   goal.position += centre - rotation_from_rpy(goal.rpy) * centre;
-  return goal;
+  // a pose the legs cannot hold is cut back towards the level stand at that height
+  BodyPose level = goal;
+  level.rpy.setZero();
+  level.position.head<2>() = com_xy - config_.com_in_body.head<2>();
+  Footholds footholds{};
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) footholds[leg] = frame_.foothold(leg);
+  return blend(level, goal, reachable_fraction(level, goal, footholds, kAllLegs));
 }
 
 void PoseControlMode::update(const RobotState&, const HighLevelCommand& command) {

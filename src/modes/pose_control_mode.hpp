@@ -42,10 +42,6 @@ class PoseControlMode final : public Mode {
   int gait_id() const override { return gait_; }
   int progress_percent() const override;
 
-  // the commanded body pose now (stance frame) and the frame itself
-  const BodyPose& commanded_pose() const { return ramp_.value(); }
-  const StanceFrame& frame() const { return frame_; }
-
  private:
   // body pose (stance frame) a gait 0 / 5 command asks for
   BodyPose goal_pose(const HighLevelCommand& command);

@@ -12,9 +12,10 @@ struct PushRequest {
 };
 
 struct PushSpring {
-  double stiffness_n_per_m = 400.0;
-  double damping_n_s_per_m = 40.0;
-  double max_force_n = 200.0;
+  // at most about 0.5 g on the 8.5 kg robot: a push it can stand against, not a throw
+  double stiffness_n_per_m = 150.0;
+  double damping_n_s_per_m = 15.0;
+  double max_force_n = 40.0;
 };
 
 // world-frame force on the trunk: stiffness * (target - com) - damping * com_velocity, its

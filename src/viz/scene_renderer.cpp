@@ -10,7 +10,7 @@ constexpr int kMaxGeoms = 2000;
 
 }  // namespace
 
-SceneRenderer::SceneRenderer(const mjModel* model, int offscreen_width, int offscreen_height) {
+SceneRenderer::SceneRenderer(const mjModel* model, int offscreen_width, int offscreen_height, int font_scale) {
   model_ = mj_copyModel(nullptr, model);
   if (!model_) throw std::runtime_error("renderer: cannot copy the MuJoCo model");
   model_->vis.global.offwidth = offscreen_width;
@@ -23,7 +23,7 @@ SceneRenderer::SceneRenderer(const mjModel* model, int offscreen_width, int offs
   mjv_defaultOption(&option_);
   mjr_defaultContext(&context_);
   mjv_makeScene(model_, &scene_, kMaxGeoms);
-  mjr_makeContext(model_, &context_, mjFONTSCALE_150);
+  mjr_makeContext(model_, &context_, font_scale);
   // the floor reflection doubles the cost of a software-rendered frame and adds little
   scene_.flags[mjRND_REFLECTION] = 0;
   option_.flags[mjVIS_PERTFORCE] = 1;

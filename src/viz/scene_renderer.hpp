@@ -15,8 +15,8 @@ namespace cerebellum {
 
 class SceneRenderer {
  public:
-  // offscreen_width/height: size of the offscreen buffer (recorder, screenshots)
-  SceneRenderer(const mjModel* model, int offscreen_width, int offscreen_height);
+  // offscreen_width/height: size of the offscreen buffer (recorder); font_scale: mjtFontScale
+  SceneRenderer(const mjModel* model, int offscreen_width, int offscreen_height, int font_scale);
   ~SceneRenderer();
   SceneRenderer(const SceneRenderer&) = delete;
   SceneRenderer& operator=(const SceneRenderer&) = delete;

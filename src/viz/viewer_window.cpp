@@ -38,7 +38,7 @@ ViewerWindow::ViewerWindow(const mjModel* model, const std::string& title, int w
   }
   glfwMakeContextCurrent(window_);
   glfwSwapInterval(1);
-  renderer_ = std::make_unique<SceneRenderer>(model, 640, 480);
+  renderer_ = std::make_unique<SceneRenderer>(model, 640, 480, mjFONTSCALE_150);
   renderer_->use_window_buffer();
   mjv_defaultPerturb(&perturbation_);
 

@@ -1,9 +1,10 @@
-// Mode 21 in simulation: position-based pose control reaches its poses, gait 5 its height, gait 2
-// lifts a leg (hand shake) while the body stays up.
+// Mode 21 in simulation: position-based pose control reaches its poses (gait 0) and heights
+// (gait 5), rotates about the control point, lifts a leg for a hand shake (gait 2) while the body
+// stays up, holds wherever it is told to (gait 3), and clamps out-of-range commands.
 #include <gtest/gtest.h>
 
-#include <cstdio>
-#include <cstdlib>
+#include <cmath>
+#include <string>
 
 #include "modes/mode_sim.hpp"
 
@@ -13,44 +14,162 @@ namespace {
 using testing::command;
 using testing::ModeSim;
 
-HighLevelCommand pose(double roll, double pitch, double yaw, double dz = 0.0, int gait = 0) {
-  HighLevelCommand c = command(ModeId::PoseControl, gait);
+HighLevelCommand pose(double roll, double pitch, double yaw, double dz = 0.0) {
+  HighLevelCommand c = command(ModeId::PoseControl, 0);
   c.rpy_des = {static_cast<float>(roll), static_cast<float>(pitch), static_cast<float>(yaw)};
   c.pos_des = {0.0f, 0.0f, static_cast<float>(dz)};
   return c;
 }
 
-TEST(PoseControlSim, Debug) {
-  const double R = std::getenv("R") ? std::atof(std::getenv("R")) : 0.0;
-  const double P = std::getenv("P") ? std::atof(std::getenv("P")) : 0.0;
-  const double Y = std::getenv("Y") ? std::atof(std::getenv("Y")) : 0.0;
-  const double Z = std::getenv("Z") ? std::atof(std::getenv("Z")) : 0.0;
-  ModeSim sim;
+HighLevelCommand height(double height_m, int duration_ms) {
+  HighLevelCommand c = command(ModeId::PoseControl, 5);
+  c.pos_des = {0.0f, 0.0f, static_cast<float>(height_m)};
+  c.duration = duration_ms;
+  return c;
+}
+
+// stands up (mode 12), then takes over in pose control at the stand pose (height 0.235)
+void stand_in_pose_control(ModeSim& sim) {
   sim.run(3.0);
-  const double yaw0 = sim.true_rpy().z();
-  sim.send(pose(0, 0, 0), 1.5);
-  for (int i = 0; i < 25; ++i) {
+  sim.send(pose(0, 0, 0), 1.0);
+}
+
+struct PoseCase {
+  double roll, pitch, yaw, dz;
+};
+
+TEST(PoseControlSim, ReachesCommandedRollPitchYawAndHeightOffset) {
+  for (const PoseCase& p : {PoseCase{0.3, 0.0, 0.0, 0.0}, PoseCase{0.0, 0.3, 0.0, 0.0}, PoseCase{0.0, -0.3, 0.0, 0.0},
+                            PoseCase{0.0, 0.0, -0.4, 0.0}, PoseCase{0.0, 0.0, 0.0, -0.05}, PoseCase{0.15, -0.1, 0.2, 0.02}}) {
+    ModeSim sim;
+    stand_in_pose_control(sim);
+    const double yaw0 = sim.true_rpy().z();
+    sim.send(pose(p.roll, p.pitch, p.yaw, p.dz), 0.1);
+    EXPECT_EQ(sim.status().switch_status, SwitchStatus::Transitioning);
+    sim.run(2.0);
     const Eigen::Vector3d rpy = sim.true_rpy();
-    std::printf("t %.2f h %.3f rpy %.3f %.3f %.3f bar %d\n", sim.time_s(), sim.true_height(), rpy.x(), rpy.y(), rpy.z() - yaw0,
-                sim.status().order_process_bar);
-    if (i == 0) sim.send(pose(R, P, Y, Z), 0.1); else sim.run(0.1);
+    const std::string label = std::to_string(p.roll) + " " + std::to_string(p.pitch) + " " + std::to_string(p.yaw);
+    EXPECT_NEAR(rpy.x(), p.roll, 0.03) << label;
+    EXPECT_NEAR(rpy.y(), p.pitch, 0.03) << label;
+    EXPECT_NEAR(wrap_angle(rpy.z() - yaw0), p.yaw, 0.03) << label;
+    // pitch about the body origin leaves its height alone
+    EXPECT_NEAR(sim.true_height(), 0.235 + p.dz, 0.01) << label;
+    EXPECT_EQ(sim.status().switch_status, SwitchStatus::Done) << label;
   }
+}
+
+TEST(PoseControlSim, GaitFiveSetsTheAbsoluteHeightAndNeedsADuration) {
+  ModeSim sim;
+  stand_in_pose_control(sim);
+  sim.send(height(0.2, 1000), 0.9);
+  EXPECT_EQ(sim.status().gait_id, 5);
+  EXPECT_EQ(sim.status().order_process_bar, 100);  // a timed entry's clock runs while it moves
+  sim.run(1.0);
+  EXPECT_NEAR(sim.true_height(), 0.2, 0.01);
+  // after the timed entry the queue holds the pose: (21, 3)
+  EXPECT_EQ(sim.status().gait_id, 3);
+  EXPECT_NEAR(sim.true_height(), 0.2, 0.01);
+  sim.send(height(0.26, 1000), 2.0);
+  EXPECT_NEAR(sim.true_height(), 0.26, 0.01);
+  // beyond the range: 0.35 -> 0.27, 0.05 -> 0.15
+  sim.send(height(0.35, 1000), 2.0);
+  EXPECT_NEAR(sim.true_height(), 0.27, 0.01);
+  sim.send(height(0.05, 1500), 2.5);
+  EXPECT_NEAR(sim.true_height(), 0.15, 0.01);
+  // duration 0 is refused
+  sim.send(height(0.22, 0), 0.1);
+  EXPECT_EQ(sim.status().switch_status, SwitchStatus::BanTransition);
+}
+
+TEST(PoseControlSim, ClampsRollPitchYawToTheirRanges) {
+  for (int axis = 0; axis < 3; ++axis) {
+    ModeSim sim;
+    stand_in_pose_control(sim);
+    sim.send(height(0.2, 500), 1.0);
+    const double yaw0 = sim.true_rpy().z();
+    HighLevelCommand c = pose(0.0, 0.0, 0.0);
+    c.rpy_des[static_cast<std::size_t>(axis)] = -1.0f;
+    sim.send(c, 2.5);
+    Eigen::Vector3d rpy = sim.true_rpy();
+    rpy.z() = wrap_angle(rpy.z() - yaw0);
+    EXPECT_NEAR(rpy[axis], -0.45, 0.03) << axis;
+  }
+}
+
+TEST(PoseControlSim, PosesBeyondTheLegsReachAreCutBackAndHeldSafely) {
+  ModeSim sim;
+  stand_in_pose_control(sim);
+  // pitch and yaw at their limits together, at the stand height: the rear legs cannot reach
+  sim.send(pose(0.0, 0.45, 0.45), 2.5);
+  const Eigen::Vector3d rpy = sim.true_rpy();
+  EXPECT_GT(rpy.y(), 0.1);
+  EXPECT_LT(rpy.y(), 0.45);
+  EXPECT_GT(sim.true_height(), 0.2);
+  EXPECT_EQ(sim.status().switch_status, SwitchStatus::Done);
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    const robot::JointRange range = robot::joint_range(i);
+    EXPECT_GT(sim.state().q[i], range.lower + 0.02) << i;
+    EXPECT_LT(sim.state().q[i], range.upper - 0.02) << i;
+  }
+}
+
+TEST(PoseControlSim, PitchTurnsAboutTheControlPoint) {
+  ModeSim sim;
+  stand_in_pose_control(sim);
+  const Eigen::Vector3d point_in_body(0.2, 0.0, 0.0);
+  const auto point_in_world = [&] {
+    const GroundTruth t = sim.backend.ground_truth();
+    return Eigen::Vector3d(Eigen::Vector3d(t.position[0], t.position[1], t.position[2]) +
+                           sim.true_orientation() * point_in_body);
+  };
+  sim.send(height(0.2, 500), 1.0);
+  const Eigen::Vector3d before = point_in_world();
+  HighLevelCommand c = pose(0.0, 0.2, 0.0);
+  c.ctrl_point = {0.2f, 0.0f, 0.0f};
+  sim.send(c, 2.0);
+  EXPECT_NEAR(sim.true_rpy().y(), 0.2, 0.03);
+  // the head point stays put (a pitch about the body origin would drop it by 4 cm)
+  EXPECT_LT((point_in_world() - before).norm(), 0.01);
+}
+
+TEST(PoseControlSim, HandShakeLiftsTheRightFrontFootWhileTheBodyStaysUp) {
+  ModeSim sim;
+  stand_in_pose_control(sim);
+  HighLevelCommand shake = command(ModeId::PoseControl, 2);
+  shake.contact = 0b1110;
+  shake.foot_pose = {0.08f, 0.0f, 0.12f, 0.0f, 0.0f, 0.0f};
+  sim.send(shake, 0.5);
+  EXPECT_EQ(sim.status().switch_status, SwitchStatus::Transitioning);
+  sim.run(2.0);
+  EXPECT_EQ(sim.status().switch_status, SwitchStatus::Done);
+  EXPECT_GT(sim.true_foot(0).z() - robot::kFootRadius, 0.05);
+  for (std::size_t leg = 1; leg < kNumLegs; ++leg) EXPECT_LT(sim.true_foot(leg).z() - robot::kFootRadius, 0.005) << leg;
+  EXPECT_GT(sim.true_height(), 0.22);
+  EXPECT_LT(std::abs(sim.true_rpy().x()), 0.05);
+  EXPECT_LT(std::abs(sim.true_rpy().y()), 0.05);
+  EXPECT_EQ(sim.status().contact, 0b1110);
+  // gait 2 without a lifted leg is refused
+  sim.send(command(ModeId::PoseControl, 2), 0.1);
+  EXPECT_EQ(sim.status().switch_status, SwitchStatus::BanTransition);
+  // put down by a pose command with all feet on the ground
+  sim.send(pose(0, 0, 0), 2.5);
+  EXPECT_LT(sim.true_foot(0).z() - robot::kFootRadius, 0.005);
+  EXPECT_EQ(sim.status().contact, 0x0F);
+}
+
+TEST(PoseControlSim, HoldStopsTheBodyWhereItIs) {
+  ModeSim sim;
+  stand_in_pose_control(sim);
+  sim.send(pose(0.0, 0.0, 0.0, -0.08), 0.3);
+  sim.send(command(ModeId::PoseControl, 3), 0.5);
+  const double held = sim.true_height();
+  EXPECT_LT(held, 0.225);
+  EXPECT_GT(held, 0.16);
+  sim.run(1.0);
+  EXPECT_NEAR(sim.true_height(), held, 0.003);
+  EXPECT_EQ(sim.status().gait_id, 3);
+  EXPECT_EQ(sim.status().switch_status, SwitchStatus::Done);
 }
 
 }  // namespace
 }  // namespace cerebellum
-namespace cerebellum {
-TEST(PoseControlSim, ShakeDebug) {
-  testing::ModeSim sim;
-  sim.run(3.0);
-  HighLevelCommand c = testing::command(ModeId::PoseControl, 2);
-  c.contact = 0b1110;
-  c.foot_pose = {0.08f, 0.0f, 0.12f, 0, 0, 0};
-  for (int i = 0; i < 40; ++i) {
-    const Eigen::Vector3d rpy = sim.true_rpy();
-    std::printf("t %.2f h %.3f rpy %.3f %.3f foot %.3f %.3f bar %d mode %d\n", sim.time_s(), sim.true_height(), rpy.x(), rpy.y(),
-                sim.true_foot(0).x(), sim.true_foot(0).z(), sim.status().order_process_bar, sim.status().mode);
-    if (i == 0) sim.send(c, 0.1); else if (i == 25) { c.gait_id = 0; c.contact = 0x0F; sim.send(c, 0.1);} else sim.run(0.1);
-  }
-}
-}

@@ -89,7 +89,12 @@ TEST(ForceDistribution, FeasibleRandomWrenchesAreReproducedAndSatisfyKkt) {
     const qp::fixtures::KktResiduals kkt = qp::fixtures::kkt_residuals(distribution.last_problem(), distribution.last_solution());
     EXPECT_LT(kkt.worst(), 1e-6) << trial;
     ASSERT_EQ(reference.solve(distribution.last_problem(), reference_solution), qp::QpStatus::Solved);
-    EXPECT_LT((reference_solution.x - distribution.last_solution().x).cwiseAbs().maxCoeff(), 1e-4) << trial;
+    // the regularised problem is strictly convex: one minimizer (the null-space directions of the
+    // wrench map are weakly curved, so forces agree to 0.01 N and the objective much closer)
+    const double own_objective = qp::fixtures::objective_of(distribution.last_problem(), distribution.last_solution().x);
+    const double reference_objective = qp::fixtures::objective_of(distribution.last_problem(), reference_solution.x);
+    EXPECT_LE(own_objective, reference_objective + 1e-9 * std::abs(reference_objective)) << trial;
+    EXPECT_LT((reference_solution.x - distribution.last_solution().x).cwiseAbs().maxCoeff(), 1e-2) << trial;
   }
 }
 

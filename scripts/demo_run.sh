@@ -1,0 +1,32 @@
+#!/usr/bin/env bash
+# The demo itself, on a built tree, inside a network namespace (scripts/demo.sh sets that up).
+#   scripts/demo_run.sh [--short]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+out="$root/build/demo"
+mkdir -p "$out"
+sim=(build/src/app/cerebellum sim --config config/demo.yaml --speed 1
+     --record "$out/demo.mp4" --record-fps 10 --record-size 480x360 --telemetry "$out/telemetry.csv")
+cd "$root"
+echo "demo: starting the MC on the simulated robot (log: $out/sim.log)"
+"${sim[@]}" > "$out/sim.log" 2>&1 &
+sim_pid=$!
+trap 'kill -INT $sim_pid 2>/dev/null || true' EXIT
+# wait for the MC's ready line
+for _ in $(seq 100); do
+  grep -q "cerebellum ready" "$out/sim.log" && break
+  kill -0 $sim_pid 2>/dev/null || { cat "$out/sim.log"; exit 1; }
+  sleep 0.1
+done
+status=0
+build/examples/highlevel/cerebellum_demo_tour "$@" || status=$?
+kill -INT $sim_pid
+wait $sim_pid || status=$?
+trap - EXIT
+/usr/bin/python3 scripts/plot_telemetry.py "$out/telemetry.csv" --out "$out" > "$out/plots.log" 2>&1 || status=$?
+echo
+grep -E "^cerebellum stopped|^highlevel:" "$out/sim.log" || true
+echo "video:     $out/demo.mp4"
+echo "telemetry: $out/telemetry.csv"
+echo "plots:     $(ls "$out"/*.png 2>/dev/null | tr '\n' ' ')"
+exit $status

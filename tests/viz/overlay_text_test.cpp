@@ -1,0 +1,48 @@
+// The viewer's and the recorder's status text.
+#include "viz/overlay_text.hpp"
+
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+namespace cerebellum {
+namespace {
+
+std::size_t lines(const std::string& text) { return std::count(text.begin(), text.end(), '\n') + 1; }
+
+TEST(OverlayText, NamesTheInterfaceModesAndSaysWhenAModeIsUnknown) {
+  EXPECT_EQ(mode_name(0), "off");
+  EXPECT_EQ(mode_name(7), "pure damper");
+  EXPECT_EQ(mode_name(11), "locomotion");
+  EXPECT_EQ(mode_name(12), "recovery stand");
+  EXPECT_EQ(mode_name(21), "pose control");
+  EXPECT_EQ(mode_name(99), "mode 99");
+  EXPECT_STREQ(switch_status_name(SwitchStatus::Transitioning), "transitioning");
+  EXPECT_STREQ(switch_status_name(SwitchStatus::BanTransition), "ban transition");
+}
+
+TEST(OverlayText, ShowsStatusEstimateAndTruthRowByRow) {
+  SimSnapshot snapshot;
+  snapshot.time_s = 12.346;
+  snapshot.status.mode = 11;
+  snapshot.status.gait_id = 27;
+  snapshot.status.switch_status = SwitchStatus::Done;
+  snapshot.estimated_velocity_body = {0.31, -0.05, 0.2};
+  snapshot.true_velocity_body = {0.29, -0.04, 0.19};
+  snapshot.estimated_height_m = 0.251;
+  snapshot.true_height_m = 0.249;
+
+  const OverlayText text = status_overlay(snapshot, "paused");
+  ASSERT_EQ(lines(text.titles), lines(text.values));
+  EXPECT_EQ(text.values,
+            "12.35 s\n11 locomotion\n27\ndone\n+0.31 -0.05 m/s +0.20 rad/s\n+0.29 -0.04 m/s +0.19 rad/s\n"
+            "0.251 / 0.249 m\npaused");
+  EXPECT_NE(text.titles.find("truth"), std::string::npos);
+
+  const OverlayText without_run_state = status_overlay(snapshot, "");
+  EXPECT_EQ(lines(without_run_state.titles), lines(text.titles) - 1);
+  EXPECT_EQ(lines(without_run_state.values), lines(text.values) - 1);
+}
+
+}  // namespace
+}  // namespace cerebellum
