@@ -49,8 +49,12 @@ Mc::Mc(const McConfig& config)
   machine_.add_mode(qp_stand_);
   machine_.add_mode(pose_control_);
   machine_.add_mode(lifted_);
-  // every gait of the table runs on the MPC locomotion controller
-  for (int gait : {1, 2, 3, 4, 7, 10, 26, 27, 31}) gaits_.add(gait, walking_);
+  // the walking gaits run on the MPC locomotion controller; the stands on the configured one
+  for (int gait : {2, 3, 4, 7, 10, 26, 27}) gaits_.add(gait, walking_);
+  LocomotionGait& stand = config.locomotion_stand == LocomotionStand::Mpc ? static_cast<LocomotionGait&>(walking_)
+                                                                          : qp_stand_gait_;
+  gaits_.add(1, stand);
+  gaits_.add(31, stand);
   machine_.add_mode(locomotion_);
 }
 

@@ -9,6 +9,7 @@
 #include "modes/high_level_machine.hpp"
 #include "modes/lifted_mode.hpp"
 #include "modes/locomotion_mode.hpp"
+#include "modes/locomotion_stand_gait.hpp"
 #include "modes/walking_gaits.hpp"
 #include "modes/passive_modes.hpp"
 #include "modes/pose_control_mode.hpp"
@@ -47,6 +48,7 @@ class Mc {
   LiftedMode lifted_;
   GaitRegistry gaits_;
   WalkingGaits walking_;
+  LocomotionStandGait qp_stand_gait_;
   LocomotionMode locomotion_;
   HighLevelMachine machine_;
   SourceArbiter arbiter_;

@@ -193,8 +193,12 @@ McConfig load_config(const std::string& path) {
 
   if (root["mc"]) {
     std::string startup = "stand";
-    SectionReader(root["mc"], path, "mc", {"startup"}).text("startup", startup, {"stand", "off", "damper"});
+    std::string stand = "mpc";
+    const SectionReader mc(root["mc"], path, "mc", {"startup", "locomotion_stand"});
+    mc.text("startup", startup, {"stand", "off", "damper"});
+    mc.text("locomotion_stand", stand, {"mpc", "qp"});
     config.startup = startup == "off" ? Startup::Off : startup == "damper" ? Startup::Damper : Startup::Stand;
+    config.locomotion_stand = stand == "qp" ? LocomotionStand::Qp : LocomotionStand::Mpc;
   }
   if (root["robot"]) {
     read_robot(SectionReader(root["robot"], path, "robot",

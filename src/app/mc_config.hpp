@@ -21,8 +21,17 @@ enum class Startup {
   Damper,   // joint damping (PureDamper); low-level clients may take over
 };
 
+// what serves mode 11's stand gaits 1 and 31
+enum class LocomotionStand {
+  Mpc,  // the walking controller with an all-stance schedule: a stand asked for while walking
+        // first brings the body to rest by stepping
+  Qp,   // the force-based QP stand of mode 3: gait 1 pulls the body back over its feet after a
+        // push, 31 only damps it; a stand asked for while walking stops the legs at once
+};
+
 struct McConfig {
   Startup startup = Startup::Stand;
+  LocomotionStand locomotion_stand = LocomotionStand::Mpc;
   MujocoBackendConfig robot;
   double loop_period_s = 0.002;
   StandUpConfig stand_up = default_stand_up_config();

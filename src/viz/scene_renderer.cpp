@@ -15,6 +15,8 @@ SceneRenderer::SceneRenderer(const mjModel* model, int offscreen_width, int offs
   if (!model_) throw std::runtime_error("renderer: cannot copy the MuJoCo model");
   model_->vis.global.offwidth = offscreen_width;
   model_->vis.global.offheight = offscreen_height;
+  // software rendering: a 1024 shadow map looks the same at these sizes and costs far less than 4096
+  model_->vis.quality.shadowsize = 1024;
   data_ = mj_makeData(model_);
   trunk_body_ = std::max(0, mj_name2id(model_, mjOBJ_BODY, "trunk"));
 

@@ -71,3 +71,23 @@ TEST(McWalking, StopsAndStandsWhenAskedForTheStandGaitWhileRunning) {
 
 }  // namespace
 }  // namespace cerebellum
+
+namespace cerebellum {
+namespace {
+
+TEST(McWalking, QpStandServesTheStandGaitsWhenConfigured) {
+  McConfig config = lying_start();
+  config.locomotion_stand = LocomotionStand::Qp;
+  Mc mc(config);
+  LockstepClient client(mc);
+  client.run(command(ModeId::RecoveryStand, 0), 3.0);
+  client.run(command(ModeId::Locomotion, 31), 2.0);
+  EXPECT_EQ(mc.machine().status().mode, 11);
+  EXPECT_EQ(mc.machine().status().gait_id, 31);
+  // the QP stand plans no steps: the walking controller has not run a single MPC solve
+  EXPECT_EQ(mc.walking().controller().telemetry().mpc_solves, 0u);
+  EXPECT_GT(mc.backend().ground_truth().position[2], 0.2);
+}
+
+}  // namespace
+}  // namespace cerebellum
