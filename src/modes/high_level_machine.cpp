@@ -40,13 +40,18 @@ void HighLevelMachine::switch_to(Mode& mode, const RobotState& state, const High
   banned_ = false;
   running_command_ = command;
   lift_detector_.reset();
-  if (mode.id() == ModeId::RecoveryStand) orientation_error_ = false;
+  if (mode.id() == ModeId::RecoveryStand) {
+    orientation_error_ = false;
+    foot_position_error_ = 0;
+  }
   mode.enter(state, command);
 }
 
 const char* HighLevelMachine::protection_refusal(ModeId target) const {
-  if (orientation_error_ && target != ModeId::RecoveryStand && target != ModeId::Off && target != ModeId::PureDamper) {
-    return "orientation error: only a recovery stand clears it";
+  const bool protected_stop = orientation_error_ || foot_position_error_ != 0;
+  if (protected_stop && target != ModeId::RecoveryStand && target != ModeId::Off && target != ModeId::PureDamper) {
+    return orientation_error_ ? "orientation error: only a recovery stand clears it"
+                              : "foot position error: only a recovery stand clears it";
   }
   if (current_->id() == ModeId::Lifted && (target == ModeId::QpStand || target == ModeId::Locomotion)) {
     return "lifted: the stand resumes by itself once the robot is set down";
@@ -63,9 +68,12 @@ void HighLevelMachine::watch_body(const RobotState& state) {
   }
   if (!watches_body(id)) return;
   Mode* damper = mode_for(static_cast<int>(ModeId::PureDamper));
-  if (orientation_error(state) && damper != nullptr) {
-    // tipped over: damp the joints, drop the client's sequence, wait for a recovery stand
-    orientation_error_ = true;
+  const int foot_bits = watches_feet(id) ? foot_position_error_bits(state) : 0;
+  if ((orientation_error(state) || foot_bits != 0) && damper != nullptr) {
+    // tipped over or a foot out of reach: damp the joints, drop the client's sequence, wait for
+    // a recovery stand
+    orientation_error_ = orientation_error(state);
+    foot_position_error_ = foot_bits;
     queue_.clear();
     applied_generation_ = queue_.generation();
     HighLevelCommand damp;
@@ -161,7 +169,9 @@ void HighLevelMachine::update_status(const RobotState& state) {
   }
   status_.order_process_bar = current_->progress_percent();
   status_.ori_error = orientation_error_ ? 1 : 0;
+  status_.footpos_error = foot_position_error_;
   status_.switch_status = orientation_error_                 ? SwitchStatus::EmergencyStop
+                          : foot_position_error_ != 0        ? SwitchStatus::HighDamping
                           : banned_                          ? SwitchStatus::BanTransition
                           : current_->id() == ModeId::Lifted ? SwitchStatus::Lifted
                           : status_.order_process_bar < 100  ? SwitchStatus::Transitioning

@@ -82,6 +82,7 @@ class HighLevelMachine final : public OwnBehaviour {
   HighLevelCommand running_command_;  // what the current mode was entered or last updated with
   HighLevelCommand resume_command_;   // where a lifted robot goes once set down
   bool orientation_error_ = false;    // latched until a recovery stand starts
+  int foot_position_error_ = 0;       // footpos_error bits, latched likewise
   SpscRing<RefusalNote, 16> refusals_;
 };
 

@@ -45,6 +45,10 @@ struct Machine {
     state = RobotState{};
     state.valid = true;
     state.contact = {1, 1, 1, 1};
+    // feet where a standing robot has them, inside the walking workspace
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+      state.foot_position_body[leg] = foot_position_in_body(leg, Vec3(0.0, 0.785, -1.22));
+    }
   }
   void tick(int n = 1) {
     for (int i = 0; i < n; ++i) {
@@ -194,6 +198,37 @@ TEST(LiftDetector, LandsWithThreeLoadedFeetHeldForATenthOfASecond) {
   int ticks = 0;
   while (!detector.landed(s) && ticks < 1000) ++ticks, s.time_s += 0.002;
   EXPECT_NEAR(ticks, 50, 1);
+}
+
+}  // namespace
+}  // namespace cerebellum
+
+namespace cerebellum {
+namespace {
+
+RobotState standing_feet() {
+  RobotState state;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    state.foot_position_body[leg] = foot_position_in_body(leg, Vec3(0.0, 0.785, -1.22));
+  }
+  return state;
+}
+
+TEST(FootWorkspace, BoundsAreTheInterfaceFormulas) {
+  const FootWorkspace w;
+  EXPECT_NEAR(w.forward_m, 0.2546, 1e-4);
+  EXPECT_NEAR(w.lateral_m, 0.294 * 0.62879 + 0.094 * 0.77757, 1e-4);
+  EXPECT_NEAR(w.lowest_m, -0.3087, 1e-4);
+  EXPECT_NEAR(w.highest_m, -0.049, 1e-6);
+}
+
+TEST(FootWorkspace, StandingFeetAreInsideAndEachAxisHasItsBit) {
+  EXPECT_EQ(foot_position_error_bits(standing_feet()), 0);
+  RobotState state = standing_feet();
+  state.foot_position_body[0].x() += 0.3;   // FR forward
+  state.foot_position_body[1].y() += 0.3;   // FL lateral
+  state.foot_position_body[3].z() = -0.02;  // RL too high
+  EXPECT_EQ(foot_position_error_bits(state), (1 << 0) | (1 << 4) | (1 << 11));
 }
 
 }  // namespace

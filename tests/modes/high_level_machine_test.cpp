@@ -1,6 +1,8 @@
 // The state machine with scripted modes: switching, refusals, timeouts, status.
 #include "modes/high_level_machine.hpp"
 
+#include "core/leg_kinematics.hpp"
+
 #include <gtest/gtest.h>
 
 namespace cerebellum {
@@ -45,6 +47,10 @@ struct Machine {
   explicit Machine(ModeId startup = ModeId::Off) : machine(0.002, cmd(startup, 0, 0)) {
     for (ScriptedMode* m : {&off, &damper, &recovery, &pose, &loco}) machine.add_mode(*m);
     state.valid = true;
+    // feet where a standing robot has them, inside the walking workspace
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+      state.foot_position_body[leg] = foot_position_in_body(leg, Vec3(0.0, 0.785, -1.22));
+    }
   }
   // one tick at time t
   JointCommand tick() {
@@ -171,6 +177,28 @@ TEST(HighLevelMachine, TimedSequenceWaitsForEachSwitchToFinish) {
   EXPECT_EQ(m.machine.status().mode, 21);
   m.tick();
   EXPECT_EQ(m.machine.status().mode, 11);
+}
+
+TEST(HighLevelMachine, FootOutOfItsWorkspaceWhileWalkingDampsUntilRecoveryStand) {
+  Machine m(ModeId::RecoveryStand);
+  m.tick();
+  m.machine.submit(cmd(ModeId::Locomotion, 3, 1), m.state.time_s);
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, 11);
+  m.state.foot_position_body[2].x() -= 0.4;  // RR far behind
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, 7);
+  EXPECT_EQ(m.machine.status().footpos_error, 1 << 6);
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::HighDamping);
+  // walking again is refused until a recovery stand
+  m.machine.submit(cmd(ModeId::Locomotion, 3, 2), m.state.time_s);
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, 7);
+  m.state.foot_position_body[2].x() += 0.4;
+  m.machine.submit(cmd(ModeId::RecoveryStand, 0, 3), m.state.time_s);
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, 12);
+  EXPECT_EQ(m.machine.status().footpos_error, 0);
 }
 
 TEST(HighLevelMachine, ContactBitsComeFromTheEstimate) {

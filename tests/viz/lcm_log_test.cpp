@@ -297,6 +297,37 @@ TEST(LcmLogTools, ReplayPublishesOnEachPortInTheRecordedOrder) {
   }
 }
 
+TEST(LcmLogTools, LcmSpyScriptStartsSpyWithTheJarsElevenTypes) {
+  if (std::string(CEREBELLUM_JAVA).empty()) GTEST_SKIP() << "Java is absent: no jar, no lcm-spy";
+  ASSERT_TRUE(test::on_path("xvfb-run")) << "xvfb-run missing: scripts/install_deps.sh installs xvfb and xauth";
+  test::ScratchDir dir;
+  const std::string out = dir / "spy.out";
+  const std::string line = "CEREBELLUM_LCM_JAR=" + test::quoted(CEREBELLUM_TYPES_JAR) + " exec xvfb-run -a -n 110 " +
+                           test::quoted(CEREBELLUM_SOURCE_DIR "/scripts/lcm_spy.sh") + " 7670 > " + test::quoted(out) +
+                           " 2>&1";
+  const std::vector<std::string> command = {"/bin/sh", "-c", line};
+  std::vector<char*> argv;
+  for (const auto& arg : command) argv.push_back(const_cast<char*>(arg.c_str()));
+  argv.push_back(nullptr);
+  // its own process group, so the window server and the JVM stop together
+  posix_spawnattr_t attributes;
+  posix_spawnattr_init(&attributes);
+  posix_spawnattr_setpgroup(&attributes, 0);
+  posix_spawnattr_setflags(&attributes, POSIX_SPAWN_SETPGROUP);
+  pid_t pid = -1;
+  ASSERT_EQ(posix_spawn(&pid, argv[0], nullptr, &attributes, argv.data(), environ), 0);
+  posix_spawnattr_destroy(&attributes);
+  const auto deadline = Clock::now() + std::chrono::seconds(20);
+  bool found = false;
+  while (!found && Clock::now() < deadline) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(100));
+    found = test::read_file(out).find("Found 11 LCM types") != std::string::npos;
+  }
+  kill(-pid, SIGTERM);
+  waitpid(pid, nullptr, 0);
+  EXPECT_TRUE(found) << test::read_file(out);
+}
+
 TEST(LcmLogTools, ReplayOfAMissingLogNamesWhatItLookedFor) {
   test::ScratchDir dir;
   const auto run = test::run_command(test::quoted(CEREBELLUM_EXECUTABLE) + " replay " + test::quoted(dir / "none"));

@@ -123,7 +123,7 @@ TEST(ToolsCli, ViewerOnAVirtualDisplaySavesANonBlankFrame) {
   ASSERT_TRUE(test::on_path("xvfb-run")) << "xvfb-run missing: scripts/install_deps.sh installs xvfb and xauth";
   test::ScratchDir dir;
   const std::string shot = dir / "viewer.png";
-  const auto run = run_command("xvfb-run -a -s '-screen 0 1280x1024x24' " +
+  const auto run = run_command("xvfb-run -a -n 90 -s '-screen 0 1280x1024x24' " +
                                sim("--viewer --speed max --duration 1 --viewer-screenshot " + quoted(shot)));
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("viewer: last frame saved to " + shot), std::string::npos) << run.output;
