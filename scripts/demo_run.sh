@@ -1,13 +1,16 @@
 #!/usr/bin/env bash
 # The demo itself, on a built tree, inside a network namespace (scripts/demo.sh sets that up).
 #   scripts/demo_run.sh [--short]
+# Environment (for the tests): DEMO_OUT (default build/demo), CEREBELLUM_BIN, DEMO_TOUR_BIN.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
-out="$root/build/demo"
+out=${DEMO_OUT:-$root/build/demo}
+cerebellum=${CEREBELLUM_BIN:-$root/build/src/app/cerebellum}
+tour=${DEMO_TOUR_BIN:-$root/build/examples/highlevel/cerebellum_demo_tour}
 mkdir -p "$out"
-sim=(build/src/app/cerebellum sim --config config/demo.yaml --speed 1
+sim=("$cerebellum" sim --config "$root/config/demo.yaml" --speed 1
      --record "$out/demo.mp4" --record-fps 10 --record-size 480x360 --telemetry "$out/telemetry.csv")
-cd "$root"
+cd "$out"
 echo "demo: starting the MC on the simulated robot (log: $out/sim.log)"
 "${sim[@]}" > "$out/sim.log" 2>&1 &
 sim_pid=$!
@@ -19,11 +22,11 @@ for _ in $(seq 100); do
   sleep 0.1
 done
 status=0
-build/examples/highlevel/cerebellum_demo_tour "$@" || status=$?
+"$tour" "$@" || status=$?
 kill -INT $sim_pid
 wait $sim_pid || status=$?
 trap - EXIT
-/usr/bin/python3 scripts/plot_telemetry.py "$out/telemetry.csv" --out "$out" > "$out/plots.log" 2>&1 || status=$?
+/usr/bin/python3 "$root/scripts/plot_telemetry.py" "$out/telemetry.csv" --out "$out" > "$out/plots.log" 2>&1 || status=$?
 echo
 grep -E "^cerebellum stopped|^highlevel:" "$out/sim.log" || true
 echo "video:     $out/demo.mp4"
