@@ -23,6 +23,7 @@
 #include "app/mc.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
+#include "timed_benchmark_main.hpp"
 
 namespace cerebellum {
 namespace {
@@ -175,28 +176,5 @@ void motor_ctrl_to_spi_data_latency(benchmark::State& state, double seconds) {
 }  // namespace cerebellum
 
 int main(int argc, char** argv) {
-  double seconds = 30.0;
-  std::vector<char*> rest;
-  const std::string option = "--seconds=";
-  for (int i = 0; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg.rfind(option, 0) == 0) {
-      seconds = std::stod(arg.substr(option.size()));
-    } else {
-      rest.push_back(argv[i]);
-    }
-  }
-  int rest_argc = static_cast<int>(rest.size());
-  benchmark::RegisterBenchmark("MotorCtrlToSpiDataLatency",
-                               [seconds](benchmark::State& state) {
-                                 cerebellum::motor_ctrl_to_spi_data_latency(state, seconds);
-                               })
-      ->Iterations(1)
-      ->Unit(benchmark::kMillisecond)
-      ->UseRealTime();
-  benchmark::Initialize(&rest_argc, rest.data());
-  if (benchmark::ReportUnrecognizedArguments(rest_argc, rest.data())) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return cerebellum::run_timed_benchmark(argc, argv, "MotorCtrlToSpiDataLatency", 30.0, cerebellum::motor_ctrl_to_spi_data_latency);
 }

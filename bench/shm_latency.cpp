@@ -24,6 +24,7 @@
 #include "app/mc.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_source.hpp"
 #include "lowlevel/lowlevel_sync.h"
+#include "timed_benchmark_main.hpp"
 
 namespace cerebellum {
 namespace {
@@ -131,28 +132,5 @@ void shm_command_to_state_latency(benchmark::State& state, double seconds) {
 }  // namespace cerebellum
 
 int main(int argc, char** argv) {
-  double seconds = 60.0;
-  std::vector<char*> rest;
-  const std::string option = "--seconds=";
-  for (int i = 0; i < argc; ++i) {
-    const std::string arg = argv[i];
-    if (arg.rfind(option, 0) == 0) {
-      seconds = std::stod(arg.substr(option.size()));
-    } else {
-      rest.push_back(argv[i]);
-    }
-  }
-  int rest_argc = static_cast<int>(rest.size());
-  benchmark::RegisterBenchmark("ShmCommandToStateLatency",
-                               [seconds](benchmark::State& state) {
-                                 cerebellum::shm_command_to_state_latency(state, seconds);
-                               })
-      ->Iterations(1)
-      ->Unit(benchmark::kMillisecond)
-      ->UseRealTime();
-  benchmark::Initialize(&rest_argc, rest.data());
-  if (benchmark::ReportUnrecognizedArguments(rest_argc, rest.data())) return 1;
-  benchmark::RunSpecifiedBenchmarks();
-  benchmark::Shutdown();
-  return 0;
+  return cerebellum::run_timed_benchmark(argc, argv, "ShmCommandToStateLatency", 60.0, cerebellum::shm_command_to_state_latency);
 }
