@@ -1,5 +1,7 @@
 #include "app/cmd_options.hpp"
 
+#include "app/number_text.hpp"
+
 #include <array>
 #include <cmath>
 #include <cstdint>
@@ -50,19 +52,6 @@ const std::map<std::string, std::set<std::string>>& verb_options() {
   return options;
 }
 
-// the whole text as a finite number
-std::optional<double> parse_number(const std::string& text) {
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-  if (used != text.size() || !std::isfinite(value)) return std::nullopt;
-  return value;
-}
-
 std::string format(double value) {
   std::ostringstream out;
   out << std::setprecision(10) << value;
@@ -101,7 +90,7 @@ class OptionValues {
   double number(const std::string& option, Range range, const char* unit, double fallback) const {
     if (!has(option)) return fallback;
     const std::string& text = values_.at(option);
-    const std::optional<double> value = parse_number(text);
+    const std::optional<double> value = finite_number(text);
     if (!value || *value < range.lower || *value > range.upper) {
       fail(option + " must be a number in [" + format(range.lower) + ", " + format(range.upper) + "]" + unit +
            ", got '" + text + "'");
@@ -112,7 +101,7 @@ class OptionValues {
   long integer(const std::string& option, long lower, long upper, long fallback) const {
     if (!has(option)) return fallback;
     const std::string& text = values_.at(option);
-    const std::optional<double> value = parse_number(text);
+    const std::optional<double> value = finite_number(text);
     if (!value || *value != std::floor(*value) || *value < lower || *value > upper) {
       fail(option + " must be an integer in [" + std::to_string(lower) + ", " + std::to_string(upper) + "], got '" +
            text + "'");
@@ -128,7 +117,7 @@ class OptionValues {
     std::string item;
     std::size_t count = 0;
     while (std::getline(items, item, ',')) {
-      const std::optional<double> value = parse_number(item);
+      const std::optional<double> value = finite_number(item);
       if (!value || count >= N || std::abs(*value) > 1e6) {
         count = N + 1;
         break;
@@ -289,7 +278,7 @@ CmdOptions parse_cmd_options(const std::vector<std::string>& args) {
     command.pos_des[2] = static_cast<float>(values.number("--height", {0.15, 0.32}, " m", 0.235));
     command.duration = duration_ms(values, 0.0, 0.0);
   } else if (options.verb == "height") {
-    const std::optional<double> height_m = parse_number(height_text);
+    const std::optional<double> height_m = finite_number(height_text);
     if (!height_m || *height_m < 0.15 || *height_m > 0.27) {
       values.fail("H must be a number in [0.15, 0.27] m, got '" + height_text + "'");
     }

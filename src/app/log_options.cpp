@@ -1,5 +1,7 @@
 #include "app/log_options.hpp"
 
+#include "app/number_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
@@ -9,20 +11,6 @@ namespace {
 
 constexpr const char* kGroup = "239.255.76.67";
 
-double parse_number(const std::string& option, const std::string& text, const std::string& accepted) {
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (text.empty() || used != text.size() || !std::isfinite(value)) {
-    throw std::invalid_argument(option + ": '" + text + "' is not " + accepted);
-  }
-  return value;
-}
-
 std::string port_list() {
   std::string list;
   for (int port : interface_ports()) list += (list.empty() ? "" : ", ") + std::to_string(port);
@@ -31,7 +19,7 @@ std::string port_list() {
 
 int parse_port(const std::string& text) {
   const std::string accepted = "one of the interface ports " + port_list();
-  const double value = parse_number("--port", text, accepted);
+  const double value = option_number("--port", text, accepted);
   const auto& ports = interface_ports();
   if (std::find(ports.begin(), ports.end(), value) == ports.end()) {
     throw std::invalid_argument("--port: must be " + accepted + ", got " + text);
@@ -116,11 +104,11 @@ ReplayOptions parse_replay_options(const std::vector<std::string>& args) {
       options.help = true;
     } else if (arg == "--speed") {
       const std::string& text = value();
-      options.speed = parse_number(arg, text, "a number > 0");
+      options.speed = option_number(arg, text, "a number > 0");
       if (options.speed <= 0.0) throw std::invalid_argument("--speed: must be > 0, got " + text);
     } else if (arg == "--ttl") {
       const std::string& text = value();
-      const double ttl = parse_number(arg, text, "an integer in [0, 255]");
+      const double ttl = option_number(arg, text, "an integer in [0, 255]");
       if (ttl < 0 || ttl > 255 || ttl != std::floor(ttl)) {
         throw std::invalid_argument("--ttl: must be an integer in [0, 255], got " + text);
       }

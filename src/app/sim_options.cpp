@@ -1,25 +1,13 @@
 #include "app/sim_options.hpp"
 
+#include "app/number_text.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
 
 namespace cerebellum {
 namespace {
-
-double parse_number(const std::string& option, const std::string& text, const std::string& accepted) {
-  std::size_t used = 0;
-  double value = 0.0;
-  try {
-    value = std::stod(text, &used);
-  } catch (const std::exception&) {
-    used = 0;
-  }
-  if (used != text.size() || text.empty() || !std::isfinite(value)) {
-    throw std::invalid_argument(option + ": '" + text + "' is not " + accepted);
-  }
-  return value;
-}
 
 bool ends_with(const std::string& text, const std::string& suffix) {
   return text.size() >= suffix.size() && text.compare(text.size() - suffix.size(), suffix.size(), suffix) == 0;
@@ -30,8 +18,8 @@ void parse_size(const std::string& text, int& width, int& height) {
   const std::string accepted = "WxH with even integers, 16x16 to 3840x2160";
   const std::size_t x = text.find('x');
   if (x == std::string::npos) throw std::invalid_argument("--record-size: '" + text + "' is not " + accepted);
-  const double w = parse_number("--record-size", text.substr(0, x), accepted);
-  const double h = parse_number("--record-size", text.substr(x + 1), accepted);
+  const double w = option_number("--record-size", text.substr(0, x), accepted);
+  const double h = option_number("--record-size", text.substr(x + 1), accepted);
   if (w != std::floor(w) || h != std::floor(h) || w < 16 || h < 16 || w > 3840 || h > 2160 ||
       static_cast<long>(w) % 2 != 0 || static_cast<long>(h) % 2 != 0) {
     throw std::invalid_argument("--record-size: must be " + accepted + ", got " + text);
@@ -95,18 +83,18 @@ SimOptions parse_sim_options(const std::vector<std::string>& args) {
       if (text == "max") {
         options.speed = 0.0;
       } else {
-        options.speed = parse_number(arg, text, "a number > 0 or 'max'");
+        options.speed = option_number(arg, text, "a number > 0 or 'max'");
         if (options.speed <= 0.0) throw std::invalid_argument("--speed: must be > 0 or 'max', got " + text);
       }
     } else if (arg == "--duration") {
       const std::string& text = value();
-      options.duration_s = parse_number(arg, text, "a number of seconds > 0");
+      options.duration_s = option_number(arg, text, "a number of seconds > 0");
       if (options.duration_s <= 0.0) throw std::invalid_argument("--duration: must be > 0, got " + text);
     } else if (arg == "--config") {
       options.config_path = value();
     } else if (arg == "--seed") {
       const std::string& text = value();
-      const double seed = parse_number(arg, text, "an integer >= 0");
+      const double seed = option_number(arg, text, "an integer >= 0");
       if (seed < 0 || seed != std::floor(seed) || seed > 4294967295.0) {
         throw std::invalid_argument("--seed: must be an integer in [0, 4294967295], got " + text);
       }
@@ -124,7 +112,7 @@ SimOptions parse_sim_options(const std::vector<std::string>& args) {
       if (options.record_path.empty()) throw std::invalid_argument("--record: needs a file name such as run.mp4");
     } else if (arg == "--record-fps") {
       const std::string& text = value();
-      options.record_fps = parse_number(arg, text, "a number of frames per second in (0, 240]");
+      options.record_fps = option_number(arg, text, "a number of frames per second in (0, 240]");
       if (options.record_fps <= 0.0 || options.record_fps > 240.0) {
         throw std::invalid_argument("--record-fps: must be in (0, 240], got " + text);
       }
@@ -135,7 +123,7 @@ SimOptions parse_sim_options(const std::vector<std::string>& args) {
       if (options.telemetry_path.empty()) throw std::invalid_argument("--telemetry: needs a file name such as run.csv");
     } else if (arg == "--telemetry-rate") {
       const std::string& text = value();
-      options.telemetry_rate_hz = parse_number(arg, text, "a rate in Hz > 0");
+      options.telemetry_rate_hz = option_number(arg, text, "a rate in Hz > 0");
       if (options.telemetry_rate_hz <= 0.0) throw std::invalid_argument("--telemetry-rate: must be > 0 Hz, got " + text);
     } else {
       throw std::invalid_argument("unknown option '" + arg + "'\n" + sim_usage());
