@@ -34,7 +34,8 @@ std::array<double, 3> rpy_from_quat(const std::array<double, 4>& quat) {
   return {roll, pitch, yaw};
 }
 
-TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, const HighLevelStatus& status) {
+TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, const HighLevelStatus& status,
+                           const HighLevelCommand& running) {
   const RobotState& state = record.state;
   TelemetryRow row;
   row.time_s = state.time_s;
@@ -42,6 +43,9 @@ TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, 
   row.mode = status.mode;
   row.gait_id = status.gait_id;
   row.switch_status = static_cast<int>(status.switch_status);
+  if (running.mode == static_cast<int>(ModeId::Locomotion)) {
+    row.cmd_velocity = {running.vel_des[0], running.vel_des[1], running.vel_des[2]};
+  }
   row.est_velocity = {state.velocity_body.x(), state.velocity_body.y(), state.omega_body.z()};
   row.est_height_m = state.height_m;
   row.est_rpy = {state.rpy.x(), state.rpy.y(), state.rpy.z()};
@@ -55,7 +59,7 @@ TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, 
 
 std::string telemetry_header() {
   std::string header =
-      "time_s,tick,mode,gait_id,switch_status,"
+      "time_s,tick,mode,gait_id,switch_status,cmd_vx_m_s,cmd_vy_m_s,cmd_wz_rad_s,"
       "est_vx_m_s,est_vy_m_s,est_wz_rad_s,est_height_m,est_roll_rad,est_pitch_rad,est_yaw_rad,"
       "truth_vx_m_s,truth_vy_m_s,truth_wz_rad_s,truth_z_m,truth_roll_rad,truth_pitch_rad,truth_yaw_rad";
   for (const char* quantity : {"tau", "temp"}) {
@@ -74,6 +78,7 @@ std::string telemetry_line(const TelemetryRow& row) {
   std::snprintf(head, sizeof head, "%.4f,%llu,%d,%d,%d", row.time_s, static_cast<unsigned long long>(row.tick),
                 row.mode, row.gait_id, row.switch_status);
   std::string line = head;
+  for (double v : row.cmd_velocity) append_number(line, v);
   for (double v : row.est_velocity) append_number(line, v);
   append_number(line, row.est_height_m);
   for (double v : row.est_rpy) append_number(line, v);
@@ -86,8 +91,8 @@ std::string telemetry_line(const TelemetryRow& row) {
 }
 
 TelemetryRecorder::TelemetryRecorder(const std::string& path, double rate_hz, const MujocoBackend& backend,
-                                     const HighLevelStatus& status)
-    : path_(path), rate_hz_(rate_hz), backend_(backend), status_(status) {
+                                     const HighLevelMachine& machine)
+    : path_(path), rate_hz_(rate_hz), backend_(backend), machine_(machine) {
   if (!(rate_hz > 0.0)) throw std::invalid_argument("telemetry: the rate must be > 0 Hz");
   file_ = std::fopen(path.c_str(), "w");
   if (!file_) throw std::runtime_error("telemetry: cannot create " + path + ": " + std::strerror(errno));
@@ -106,7 +111,7 @@ void TelemetryRecorder::on_cycle(const CycleRecord& record) {
   if (time_s < start_s_ + static_cast<double>(next_row_) / rate_hz_ - 1e-9) return;
   // one row per tick at most: a rate above the loop's gives every tick
   while (time_s >= start_s_ + static_cast<double>(next_row_) / rate_hz_ - 1e-9) ++next_row_;
-  ring_.try_push(telemetry_row(record, backend_.ground_truth(), status_));
+  ring_.try_push(telemetry_row(record, backend_.ground_truth(), machine_.status(), machine_.running_command()));
 }
 
 void TelemetryRecorder::drain() {

@@ -15,7 +15,7 @@
 #include "app/control_loop.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "core/spsc_ring.hpp"
-#include "modes/high_level_command.hpp"
+#include "modes/high_level_machine.hpp"
 
 namespace cerebellum {
 
@@ -25,6 +25,7 @@ struct TelemetryRow {
   int mode = 0;
   int gait_id = 0;
   int switch_status = 0;
+  std::array<double, 3> cmd_velocity{};  // what the client asked of mode 11 (0 in other modes)
   std::array<double, 3> est_velocity{};  // vx, vy (m/s, body frame), wz (rad/s)
   double est_height_m = 0.0;
   std::array<double, 3> est_rpy{};
@@ -37,7 +38,8 @@ struct TelemetryRow {
 
 // roll, pitch, yaw (ZYX) of a unit quaternion w, x, y, z
 std::array<double, 3> rpy_from_quat(const std::array<double, 4>& quat);
-TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, const HighLevelStatus& status);
+TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, const HighLevelStatus& status,
+                           const HighLevelCommand& running);
 // the header line and one row, without the newline
 std::string telemetry_header();
 std::string telemetry_line(const TelemetryRow& row);
@@ -53,7 +55,7 @@ class TelemetryRecorder final : public CycleObserver {
   // rate_hz: rows per second of robot time (a rate above the loop's gives every tick);
   // throws std::runtime_error naming the file when it cannot be created
   TelemetryRecorder(const std::string& path, double rate_hz, const MujocoBackend& backend,
-                    const HighLevelStatus& status);
+                    const HighLevelMachine& machine);
   ~TelemetryRecorder() override;
   TelemetryRecorder(const TelemetryRecorder&) = delete;
   TelemetryRecorder& operator=(const TelemetryRecorder&) = delete;
@@ -68,7 +70,7 @@ class TelemetryRecorder final : public CycleObserver {
   std::string path_;
   double rate_hz_;
   const MujocoBackend& backend_;
-  const HighLevelStatus& status_;
+  const HighLevelMachine& machine_;
   std::FILE* file_ = nullptr;
   // loop thread
   bool started_ = false;

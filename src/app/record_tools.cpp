@@ -7,7 +7,7 @@ namespace cerebellum {
 SimTools::SimTools(Mc& mc, const SimOptions& options) : mc_(mc), options_(options) {
   if (!options.telemetry_path.empty()) {
     telemetry_ = std::make_unique<TelemetryRecorder>(options.telemetry_path, options.telemetry_rate_hz, mc.backend(),
-                                                     mc.machine().status());
+                                                     mc.machine());
     mc.loop().add_observer(*telemetry_);
   }
   if (!options.record_path.empty()) {

@@ -53,6 +53,8 @@ class HighLevelMachine final : public OwnBehaviour {
   // loop thread (or a CycleObserver in it): the response fields as of the last tick
   const HighLevelStatus& status() const { return status_; }
   const CommandCounters& counters() const { return counters_; }
+  // the command the running mode was entered or last updated with (loop thread)
+  const HighLevelCommand& running_command() const { return running_command_; }
   // refusals not yet taken by a logger (loop thread pushes, one consumer thread pops)
   SpscRing<RefusalNote, 16>& refusals() { return refusals_; }
 

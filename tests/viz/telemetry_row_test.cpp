@@ -85,10 +85,13 @@ TEST(TelemetryRow, CopiesStateTruthAndStatusIntoTheirColumns) {
   status.gait_id = 3;
   status.switch_status = SwitchStatus::Transitioning;
 
-  const TelemetryRow row = telemetry_row(record, truth, status);
+  HighLevelCommand running;
+  running.mode = 11;
+  running.vel_des = {0.4f, -0.1f, 0.3f};
+  const TelemetryRow row = telemetry_row(record, truth, status, running);
   const std::vector<std::string> header = split(telemetry_header());
   const std::vector<std::string> fields = split(telemetry_line(row));
-  ASSERT_EQ(header.size(), 19u + 2 * kNumJoints);
+  ASSERT_EQ(header.size(), 22u + 2 * kNumJoints);
   ASSERT_EQ(fields.size(), header.size());
   const auto column = [&](const std::string& name) {
     for (std::size_t i = 0; i < header.size(); ++i) {
@@ -102,6 +105,9 @@ TEST(TelemetryRow, CopiesStateTruthAndStatusIntoTheirColumns) {
   EXPECT_EQ(column("mode"), 11);
   EXPECT_EQ(column("gait_id"), 3);
   EXPECT_EQ(column("switch_status"), 1);
+  EXPECT_NEAR(column("cmd_vx_m_s"), 0.4, 1e-6);
+  EXPECT_NEAR(column("cmd_vy_m_s"), -0.1, 1e-6);
+  EXPECT_NEAR(column("cmd_wz_rad_s"), 0.3, 1e-6);
   EXPECT_NEAR(column("est_vx_m_s"), 0.4, 1e-6);
   EXPECT_NEAR(column("est_wz_rad_s"), 0.3, 1e-6);
   EXPECT_NEAR(column("est_height_m"), 0.26, 1e-6);
