@@ -17,7 +17,7 @@ SimTools::SimTools(Mc& mc, const SimOptions& options) : mc_(mc), options_(option
     video.width = options.record_width;
     video.height = options.record_height;
     video.lockstep = options.speed <= 0.0;
-    video_ = std::make_unique<VideoRecorder>(mc.backend(), mc.machine().status(), video);
+    video_ = std::make_unique<VideoRecorder>(mc.backend(), mc.machine(), video);
     mc.loop().add_observer(*video_);
   }
   if (options.viewer) viewer_ = std::make_unique<ViewerSession>(mc);

@@ -9,8 +9,8 @@
 
 namespace cerebellum {
 
-VideoRecorder::VideoRecorder(const MujocoBackend& backend, const HighLevelStatus& status, const VideoOptions& options)
-    : options_(options), backend_(backend), capture_(backend, status), staging_(capture_.sized_snapshot()) {
+VideoRecorder::VideoRecorder(const MujocoBackend& backend, const HighLevelMachine& machine, const VideoOptions& options)
+    : options_(options), backend_(backend), capture_(backend, machine), staging_(capture_.sized_snapshot()) {
   for (Slot& slot : slots_) slot.snapshot = capture_.sized_snapshot();
   std::promise<void> ready;
   std::future<void> started = ready.get_future();

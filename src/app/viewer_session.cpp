@@ -44,8 +44,8 @@ std::string run_state_text(const PaceRequest& pace, double base_speed) {
 
 }  // namespace
 
-ViewerExchange::ViewerExchange(MujocoBackend& backend, const HighLevelStatus& status)
-    : backend_(backend), capture_(backend, status), staging_(capture_.sized_snapshot()),
+ViewerExchange::ViewerExchange(MujocoBackend& backend, const HighLevelMachine& machine)
+    : backend_(backend), capture_(backend, machine), staging_(capture_.sized_snapshot()),
       shared_(capture_.sized_snapshot()) {}
 
 void ViewerExchange::on_cycle(const CycleRecord& record) {
@@ -85,7 +85,7 @@ void ViewerExchange::set_push(const PushRequest& request) {
 ViewerSession::ViewerSession(Mc& mc)
     : mc_(mc),
       window_(std::make_unique<ViewerWindow>(mc.backend().model(), "cerebellum: simulated CyberDog2")),
-      exchange_(mc.backend(), mc.machine().status()) {
+      exchange_(mc.backend(), mc.machine()) {
   mc.loop().add_observer(exchange_);
 }
 

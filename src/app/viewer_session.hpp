@@ -21,7 +21,7 @@ class ViewerWindow;
 // the loop side: a CycleObserver that copies snapshots out and applies the latest push
 class ViewerExchange final : public CycleObserver {
  public:
-  ViewerExchange(MujocoBackend& backend, const HighLevelStatus& status);
+  ViewerExchange(MujocoBackend& backend, const HighLevelMachine& machine);
 
   // loop thread; never waits for the viewer (a busy mailbox is read next tick)
   void on_cycle(const CycleRecord& record) override;

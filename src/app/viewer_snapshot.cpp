@@ -7,8 +7,8 @@
 
 namespace cerebellum {
 
-SnapshotCapture::SnapshotCapture(const MujocoBackend& backend, const HighLevelStatus& status)
-    : backend_(backend), status_(status),
+SnapshotCapture::SnapshotCapture(const MujocoBackend& backend, const HighLevelMachine& machine)
+    : backend_(backend), machine_(machine),
       trunk_body_(std::max(0, mj_name2id(backend.model(), mjOBJ_BODY, "trunk"))) {}
 
 SimSnapshot SnapshotCapture::sized_snapshot() const {
@@ -26,7 +26,12 @@ void SnapshotCapture::capture(const CycleRecord& record, SimSnapshot& out) const
   std::copy_n(data->qpos, std::min(out.qpos.size(), static_cast<std::size_t>(model->nq)), out.qpos.begin());
   std::copy_n(data->qvel, std::min(out.qvel.size(), static_cast<std::size_t>(model->nv)), out.qvel.begin());
   for (int k = 0; k < 3; ++k) out.external_force_n[k] = data->xfrc_applied[6 * trunk_body_ + k];
-  out.status = status_;
+  out.status = machine_.status();
+  const HighLevelCommand& running = machine_.running_command();
+  out.commanded_velocity = {};
+  if (running.mode == static_cast<int>(ModeId::Locomotion)) {
+    out.commanded_velocity = {running.vel_des[0], running.vel_des[1], running.vel_des[2]};
+  }
   const RobotState& state = record.state;
   out.estimated_velocity_body = {state.velocity_body.x(), state.velocity_body.y(), state.omega_body.z()};
   out.estimated_height_m = state.height_m;

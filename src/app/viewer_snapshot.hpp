@@ -5,15 +5,15 @@
 
 #include "app/control_loop.hpp"
 #include "backend/mujoco_backend.hpp"
-#include "modes/high_level_command.hpp"
+#include "modes/high_level_machine.hpp"
 #include "viz/sim_snapshot.hpp"
 
 namespace cerebellum {
 
 class SnapshotCapture {
  public:
-  // status: the machine's status, read at every capture
-  SnapshotCapture(const MujocoBackend& backend, const HighLevelStatus& status);
+  // machine: its status and running command, read at every capture
+  SnapshotCapture(const MujocoBackend& backend, const HighLevelMachine& machine);
 
   // a snapshot whose state vectors are sized to the model (allocates once)
   SimSnapshot sized_snapshot() const;
@@ -23,7 +23,7 @@ class SnapshotCapture {
 
  private:
   const MujocoBackend& backend_;
-  const HighLevelStatus& status_;
+  const HighLevelMachine& machine_;
   int trunk_body_ = 0;
 };
 

@@ -17,6 +17,7 @@ struct SimSnapshot {
   std::vector<double> qvel;  // sized to the model's nv
   std::array<double, 3> external_force_n{};  // the push on the trunk (world frame)
   HighLevelStatus status;
+  std::array<double, 3> commanded_velocity{};  // vx, vy (m/s), yaw rate (rad/s) asked of mode 11
   // the estimator's view
   std::array<double, 3> estimated_velocity_body{};  // vx, vy (m/s), yaw rate (rad/s)
   double estimated_height_m = 0.0;

@@ -27,6 +27,7 @@ TEST(OverlayText, ShowsStatusEstimateAndTruthRowByRow) {
   snapshot.status.mode = 11;
   snapshot.status.gait_id = 27;
   snapshot.status.switch_status = SwitchStatus::Done;
+  snapshot.commanded_velocity = {0.3, 0.0, 0.2};
   snapshot.estimated_velocity_body = {0.31, -0.05, 0.2};
   snapshot.true_velocity_body = {0.29, -0.04, 0.19};
   snapshot.estimated_height_m = 0.251;
@@ -35,7 +36,8 @@ TEST(OverlayText, ShowsStatusEstimateAndTruthRowByRow) {
   const OverlayText text = status_overlay(snapshot, "paused");
   ASSERT_EQ(lines(text.titles), lines(text.values));
   EXPECT_EQ(text.values,
-            "12.35 s\n11 locomotion\n27\ndone\n+0.31 -0.05 m/s +0.20 rad/s\n+0.29 -0.04 m/s +0.19 rad/s\n"
+            "12.35 s\n11 locomotion\n27\ndone\n+0.30 +0.00 m/s +0.20 rad/s\n+0.31 -0.05 m/s +0.20 rad/s\n"
+            "+0.29 -0.04 m/s +0.19 rad/s\n"
             "0.251 / 0.249 m\npaused");
   EXPECT_NE(text.titles.find("truth"), std::string::npos);
 
