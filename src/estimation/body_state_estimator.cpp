@@ -32,7 +32,7 @@ double scheduled_contact_trust(const LegContactPlan& plan, double ramp_fraction)
 }
 
 BodyStateEstimator::BodyStateEstimator(const BodyStateEstimatorConfig& config)
-    : config_(config), kinematic_(config.kinematic), filter_(config.filter) {}
+    : config_(config), kinematic_(config.kinematic), filter_(config.filter), ground_(config.ground) {}
 
 void BodyStateEstimator::reset() {
   kinematic_.reset();
@@ -63,7 +63,15 @@ void BodyStateEstimator::update(const SensorFrame& frame, RobotState& state) {
   } else {
     const double dt = std::clamp(frame.time_s - last_time_s_, 0.0, config_.max_step_s);
     update_trust(state, dt);
-    const bool accepted = filter_.predict(state.accel_world, dt, trust_) && filter_.correct(observe_legs(state));
+    std::array<bool, kNumLegs> planted{};
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) planted[leg] = trust_[leg] >= config_.planted_trust;
+    ground_.update(filter_feet(), planted, dt);
+    LegObservations legs = observe_legs(state);
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+      const Eigen::Vector3d foot = filter_.foot_position(leg);
+      legs[leg].ground_height_m = ground_.plane().height_at(foot.x(), foot.y());
+    }
+    const bool accepted = filter_.predict(state.accel_world, dt, trust_) && filter_.correct(legs);
     state.valid = accepted;
   }
   last_time_s_ = frame.time_s;
@@ -86,6 +94,7 @@ void BodyStateEstimator::start_filter(const RobotState& state) {
   std::array<Eigen::Vector3d, kNumLegs> feet;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) feet[leg] = position + legs[leg].foot_relative_world;
   filter_.initialize(position, Eigen::Vector3d::Zero(), feet);
+  ground_.reset(filter_feet());
   trust_.fill(0.0);
   time_in_contact_s_.fill(0.0);
   ground_z_m_ = 0.0;
@@ -110,6 +119,12 @@ LegObservations BodyStateEstimator::observe_legs(const RobotState& state) const 
     legs[leg].trust = trust_[leg];
   }
   return legs;
+}
+
+std::array<Eigen::Vector3d, kNumLegs> BodyStateEstimator::filter_feet() const {
+  std::array<Eigen::Vector3d, kNumLegs> feet;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) feet[leg] = filter_.foot_position(leg);
+  return feet;
 }
 
 void BodyStateEstimator::write_state(RobotState& state) {

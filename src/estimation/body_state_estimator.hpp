@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 
+#include "estimation/ground_plane.hpp"
 #include "estimation/kinematic_estimator.hpp"
 #include "estimation/linear_kalman_filter.hpp"
 
@@ -20,6 +21,9 @@ using ContactSchedule = std::array<LegContactPlan, kNumLegs>;
 struct BodyStateEstimatorConfig {
   KinematicEstimatorConfig kinematic;
   LinearKalmanFilterConfig filter;
+  // the feet's height measurement is the ground plane through the recently planted feet
+  GroundPlaneTrackerConfig ground;
+  double planted_trust = 0.9;  // a foot counts for the plane from this trust on
   // trust of a foot the force estimate reports in contact rises linearly over this time (s)
   double force_contact_ramp_s = 0.02;
   // with a schedule, trust rises over this fraction of the stance at its start and falls over it at its end
@@ -45,6 +49,7 @@ class BodyStateEstimator final : public StateEstimator {
   void clear_contact_schedule() { schedule_.reset(); }
 
   const LinearKalmanFilter& filter() const { return filter_; }
+  const GroundPlane& ground_plane() const { return ground_.plane(); }
   // per leg 0..1, as handed to the filter on the last update
   const LinearKalmanFilter::Trust& contact_trust() const { return trust_; }
 
@@ -53,10 +58,12 @@ class BodyStateEstimator final : public StateEstimator {
   void start_filter(const RobotState& state);
   LegObservations observe_legs(const RobotState& state) const;
   void write_state(RobotState& state);
+  std::array<Eigen::Vector3d, kNumLegs> filter_feet() const;
 
   BodyStateEstimatorConfig config_;
   KinematicEstimator kinematic_;
   LinearKalmanFilter filter_;
+  GroundPlaneTracker ground_;
   std::optional<ContactSchedule> schedule_;
   LinearKalmanFilter::Trust trust_{};
   std::array<double, kNumLegs> time_in_contact_s_{};

@@ -14,7 +14,8 @@ using LegMatrix = Eigen::Matrix<double, kRowsPerLeg, LinearKalmanFilter::kStateS
 int foot_index(std::size_t leg) { return kFootOffset + 3 * static_cast<int>(leg); }
 
 bool leg_is_finite(const LegObservation& leg) {
-  return leg.foot_relative_world.allFinite() && leg.body_velocity_world.allFinite() && std::isfinite(leg.trust);
+  return leg.foot_relative_world.allFinite() && leg.body_velocity_world.allFinite() && std::isfinite(leg.trust) &&
+         std::isfinite(leg.ground_height_m);
 }
 
 bool trust_is_finite(const LinearKalmanFilter::Trust& trust) {
@@ -112,7 +113,7 @@ bool LinearKalmanFilter::correct(const LegObservations& legs) {
     Eigen::Matrix<double, kRowsPerLeg, 1> innovation;
     innovation.head<3>() = legs[leg].foot_relative_world - (x.segment<3>(f) - x.head<3>());
     innovation.segment<3>(3) = legs[leg].body_velocity_world - x.segment<3>(3);
-    innovation(6) = -x(f + 2);
+    innovation(6) = legs[leg].ground_height_m - x(f + 2);
     // a velocity far outside what the filter expects is a slipping or not yet planted foot:
     // that leg's velocity then counts as if the foot were untrusted
     const Eigen::Vector3d velocity_innovation = innovation.segment<3>(3);

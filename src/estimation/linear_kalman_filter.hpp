@@ -39,6 +39,7 @@ struct LegObservation {
   Eigen::Vector3d foot_relative_world = Eigen::Vector3d::Zero();  // foot point minus trunk origin
   Eigen::Vector3d body_velocity_world = Eigen::Vector3d::Zero();  // trunk velocity if this foot is still
   double trust = 0.0;                                             // 0..1: how surely the foot is planted
+  double ground_height_m = 0.0;  // world z of the ground under the foot (0: flat ground at the origin)
 };
 using LegObservations = std::array<LegObservation, kNumLegs>;
 

@@ -91,3 +91,25 @@ TEST(McWalking, QpStandServesTheStandGaitsWhenConfigured) {
 
 }  // namespace
 }  // namespace cerebellum
+
+namespace cerebellum {
+namespace {
+
+TEST(McWalking, ClimbsTheTenDegreeRamp) {
+  McConfig config = lying_start();
+  config.robot.model_path = std::string(CEREBELLUM_MODEL_DIR) + "/terrain_slope10.xml";
+  Mc mc(config);
+  LockstepClient client(mc);
+  client.run(command(ModeId::RecoveryStand, 0), 3.0);
+  bool upright = true;
+  client.run(command(ModeId::Locomotion, 27, 0.4), 14.0, [&](const CycleRecord& record) {
+    upright &= std::abs(record.state.rpy.x()) < 0.5 && std::abs(record.state.rpy.y()) < 0.5;
+  });
+  EXPECT_TRUE(upright);
+  // the ramp rises 0.52 m over 3 m from x = 1 m; the trunk ends on the plateau
+  EXPECT_GT(mc.backend().ground_truth().position[0], 4.0);
+  EXPECT_GT(mc.backend().ground_truth().position[2], 0.5 + 0.2);
+}
+
+}  // namespace
+}  // namespace cerebellum

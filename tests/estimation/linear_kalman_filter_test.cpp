@@ -137,6 +137,7 @@ TEST(LinearKalmanFilter, CorrectionEqualsTheTextbookBatchUpdate) {
   for (LegObservation& leg : legs) {
     leg.foot_relative_world += gaussian(rng, 0.01);
     leg.body_velocity_world += gaussian(rng, 0.05);
+    leg.ground_height_m = gaussian(rng, 0.03).z();  // a ground that is not flat at z = 0
   }
   const Eigen::VectorXd x0 = filter.state();
   const Eigen::MatrixXd p0 = filter.covariance();
@@ -158,6 +159,7 @@ TEST(LinearKalmanFilter, CorrectionEqualsTheTextbookBatchUpdate) {
       r(row + 3 + k) = std::pow(config.foot_velocity_sigma_m_s, 2) * scale;
     }
     h(row + 6, foot + 2) = 1.0;
+    z(row + 6) = legs[leg].ground_height_m;
     r(row + 6) = std::pow(config.foot_height_sigma_m, 2) * scale;
   }
   const Eigen::MatrixXd s_inverse = (h * p0 * h.transpose() + Eigen::MatrixXd(r.asDiagonal())).inverse();

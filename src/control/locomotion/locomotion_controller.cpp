@@ -26,13 +26,20 @@ Eigen::Matrix3d yaw_rotation(double yaw) {
   return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
 
+// contact point under the foot sphere (world)
+Eigen::Vector3d foot_on_ground_world(const RobotState& state, std::size_t leg) {
+  return state.position_world + state.orientation * state.foot_position_body[leg] -
+         Eigen::Vector3d(0.0, 0.0, robot::kFootRadius);
+}
+
 }  // namespace
 
 LocomotionController::LocomotionController(const LocomotionConfig& config, std::unique_ptr<qp::QpSolver> solver)
     : config_(config),
       mpc_(config.mpc, std::move(solver)),
       worker_(mpc_),
-      scheduler_(config.tick_s * config.ticks_per_segment) {
+      scheduler_(config.tick_s * config.ticks_per_segment),
+      ground_(config.ground) {
   target_.gait = *gait_pattern(1);
   target_.height_m = config.default_height_m;
   target_.step_height_front_m = target_.step_height_rear_m = config.default_step_height_m;
@@ -47,6 +54,9 @@ void LocomotionController::reset(const RobotState& state) {
   height_correction_m_ = 0.0;
   tick_in_segment_ = 0;
   was_stance_.fill(true);
+  std::array<Eigen::Vector3d, kNumLegs> feet;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) feet[leg] = foot_on_ground_world(state, leg);
+  ground_.reset(feet);
   // until the first solution: share the weight evenly
   const double share = config_.mpc.mass_kg * 9.81 / kNumLegs;
   for (auto& f : forces_) f = Eigen::Vector3d(0.0, 0.0, share);
@@ -98,8 +108,19 @@ Eigen::Vector3d LocomotionController::hip_on_ground_world(std::size_t leg, const
   const double yaw_ahead = state.rpy.z() + velocity_.z() * ahead_s;
   const Eigen::Vector3d velocity_world = yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0);
   Eigen::Vector3d hip = state.position_world + yaw_rotation(yaw_ahead) * hip_body + velocity_world * ahead_s;
-  hip.z() = state.position_world.z() - state.height_m;  // the ground under the stance feet
+  hip.z() = ground_.plane().height_at(hip.x(), hip.y());  // the ground plane under the hip
   return hip;
+}
+
+void LocomotionController::update_ground(const RobotState& state) {
+  std::array<Eigen::Vector3d, kNumLegs> feet;
+  std::array<bool, kNumLegs> planted{};
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const LegPhase phase = scheduler_.leg_phase(leg);
+    planted[leg] = phase.stance && phase.stance_phase >= config_.planted_stance_phase;
+    feet[leg] = foot_on_ground_world(state, leg);
+  }
+  ground_.update(feet, planted, config_.tick_s);
 }
 
 void LocomotionController::post_mpc(const RobotState& state) {
@@ -109,7 +130,8 @@ void LocomotionController::post_mpc(const RobotState& state) {
   // yaw without wrap: the reference continues from the current yaw
   const double yaw = state.rpy.z();
   const double yaw_offset = std::clamp(wrap_angle(yaw_des_ - yaw), -0.2, 0.2);
-  const double ground_z = state.position_world.z() - state.height_m;
+  const double pitch_ref = target_.pitch_rad + ground_.pitch_along(yaw);
+  const double roll_ref = ground_.roll_along(yaw);
   // the reference turns with the commanded yaw rate: velocity and position follow the arc
   Eigen::Vector3d position = state.position_world;
   for (int k = 0; k < kMpcHorizon; ++k) {
@@ -117,7 +139,8 @@ void LocomotionController::post_mpc(const RobotState& state) {
     const Eigen::Vector3d velocity_world = yaw_rotation(yaw_k) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
     position += velocity_world * dt;
     auto& x = in.x_ref[k];
-    x << 0.0, target_.pitch_rad, yaw_k, position.x(), position.y(), ground_z + target_.height_m + height_correction_m_,
+    const double ground_z = ground_.plane().height_at(position.x(), position.y());
+    x << roll_ref, pitch_ref, yaw_k, position.x(), position.y(), ground_z + target_.height_m + height_correction_m_,
         0.0, 0.0, velocity_.z(), velocity_world.x(), velocity_world.y(), 0.0, -9.81;
   }
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
@@ -221,6 +244,7 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
   height_correction_m_ = std::clamp(
       height_correction_m_ + config_.height_integral_gain * (target_.height_m - state.height_m) * config_.tick_s,
       -config_.height_integral_limit_m, config_.height_integral_limit_m);
+  update_ground(state);
   if (tick_in_segment_ == 1) collect_mpc();
   if (tick_in_segment_ == 0) {
     // patterns change only where a cycle starts, so no foot is switched to stance mid-air

@@ -12,6 +12,7 @@
 #include "control/locomotion/mpc_worker.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
+#include "estimation/ground_plane.hpp"
 
 namespace cerebellum {
 
@@ -33,6 +34,9 @@ struct LocomotionConfig {
   double vertical_leg_half_width_m = 0.136;  // value bit1 = 1: feet under the hips
   double pigeon_toe_half_width_m = 0.11;     // value bit1 = 0: energy-saving narrower stance
   Eigen::Vector3d com_offset_body{0.013, 0.0, 0.0};
+  // ground plane for footholds, height and attitude references: feet count from this far into stance
+  GroundPlaneTrackerConfig ground;
+  double planted_stance_phase = 0.2;
   int failed_solves_to_give_up = 3;
 };
 
@@ -69,11 +73,13 @@ class LocomotionController {
   const LocomotionTelemetry& telemetry() const { return telemetry_; }
   const GaitScheduler& scheduler() const { return scheduler_; }
   const Eigen::Vector3d& ramped_velocity() const { return velocity_; }
+  const GroundPlane& ground_plane() const { return ground_.plane(); }
   // stance probability of each leg from the schedule (for the estimator)
   std::array<double, kNumLegs> scheduled_contact() const;
 
  private:
   void ramp_velocity();
+  void update_ground(const RobotState& state);
   void change_pattern_if_due(const RobotState& state);
   void post_mpc(const RobotState& state);
   void collect_mpc();
@@ -95,6 +101,7 @@ class LocomotionController {
   std::array<bool, kNumLegs> was_stance_{};
   std::array<Eigen::Vector3d, kNumLegs> swing_start_{};
   std::array<Eigen::Vector3d, kNumLegs> forces_{};
+  GroundPlaneTracker ground_;
   MpcInput mpc_input_;
   MpcOutput mpc_output_;
   int consecutive_failures_ = 0;

@@ -1,0 +1,55 @@
+// The ground under the robot as a plane z = z_c + g . ((x, y) - c), fitted to the points where
+// the feet were last planted. Robust for control: only feet planted for a while count, the
+// gradient is low-passed, small slopes read as flat and steep ones are clamped.
+#pragma once
+
+#include <Eigen/Core>
+#include <array>
+
+#include "core/joint_layout.hpp"
+
+namespace cerebellum {
+
+struct GroundPlane {
+  Eigen::Vector2d centre_xy = Eigen::Vector2d::Zero();  // world x, y the plane passes through
+  double centre_z = 0.0;                                // its height there (m)
+  Eigen::Vector2d gradient = Eigen::Vector2d::Zero();   // dz/dx, dz/dy
+
+  double height_at(double x, double y) const {
+    return centre_z + gradient.dot(Eigen::Vector2d(x, y) - centre_xy);
+  }
+};
+
+// least-squares plane through the points (vertical residuals); false (plane unchanged) when
+// their x, y are (nearly) collinear
+bool fit_ground_plane(const std::array<Eigen::Vector3d, kNumLegs>& points, GroundPlane& plane);
+
+struct GroundPlaneTrackerConfig {
+  double gradient_time_constant_s = 0.3;  // low-pass of the fitted gradient
+  double flat_slope_rad = 0.035;          // slopes up to this read as flat (about 2 degrees)
+  double max_slope_rad = 0.35;            // steeper fits are clamped to this (about 20 degrees)
+};
+
+class GroundPlaneTracker {
+ public:
+  explicit GroundPlaneTracker(const GroundPlaneTrackerConfig& config = {}) : config_(config) {}
+
+  // every foot planted where it is now, the ground flat through them
+  void reset(const std::array<Eigen::Vector3d, kNumLegs>& feet_world);
+  // feet_world: foot contact points (world); planted: legs in stance for a while, whose points
+  // replace the stored ones
+  void update(const std::array<Eigen::Vector3d, kNumLegs>& feet_world, const std::array<bool, kNumLegs>& planted,
+              double dt_s);
+  const GroundPlane& plane() const { return plane_; }
+  // ground pitch and roll seen along a heading (rad): nose-up on an uphill is negative pitch
+  double pitch_along(double yaw) const;
+  double roll_along(double yaw) const;
+
+ private:
+  GroundPlaneTrackerConfig config_;
+  std::array<Eigen::Vector3d, kNumLegs> planted_{};
+  Eigen::Vector2d raw_gradient_ = Eigen::Vector2d::Zero();  // low-passed fit, before deadband
+  GroundPlane plane_;
+};
+
+}  // namespace cerebellum
