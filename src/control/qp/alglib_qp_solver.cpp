@@ -46,12 +46,7 @@ AlglibQpSolver::AlglibQpSolver(const QpDimensions& max_dims, const AlglibQpSetti
 AlglibQpSolver::~AlglibQpSolver() = default;
 
 QpStatus AlglibQpSolver::solve(const QpProblem& problem, QpSolution& solution) {
-  if (!has_valid_shape_and_values(problem)) {
-    solution.status = QpStatus::InvalidInput;
-    solution.iterations = 0;
-    solution.objective = std::numeric_limits<double>::quiet_NaN();
-    return solution.status;
-  }
+  if (reject_invalid_problem(problem, solution)) return solution.status;
   const QpDimensions dims = problem.dimensions();
   solution.reset(dims.variables, dims.equalities, dims.inequalities);
   solution.status = run(problem, solution);

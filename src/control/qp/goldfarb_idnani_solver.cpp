@@ -47,12 +47,7 @@ void GoldfarbIdnaniSolver::reserve(const QpDimensions& max_dims) {
 }
 
 QpStatus GoldfarbIdnaniSolver::solve(const QpProblem& problem, QpSolution& solution) {
-  if (!has_valid_shape_and_values(problem)) {
-    solution.status = QpStatus::InvalidInput;
-    solution.iterations = 0;
-    solution.objective = std::numeric_limits<double>::quiet_NaN();
-    return solution.status;
-  }
+  if (reject_invalid_problem(problem, solution)) return solution.status;
   const QpDimensions dims = problem.dimensions();
   reserve(dims);
   solution.reset(dims.variables, dims.equalities, dims.inequalities);

@@ -25,4 +25,12 @@ void QpSolution::reset(Eigen::Index variables, Eigen::Index equalities, Eigen::I
   ineq_state.assign(static_cast<std::size_t>(inequalities), RowState::Inactive);
 }
 
+bool reject_invalid_problem(const QpProblem& problem, QpSolution& solution) {
+  if (has_valid_shape_and_values(problem)) return false;
+  solution.status = QpStatus::InvalidInput;
+  solution.iterations = 0;
+  solution.objective = std::numeric_limits<double>::quiet_NaN();
+  return true;
+}
+
 }  // namespace cerebellum::qp

@@ -13,6 +13,8 @@
 
 #include <Eigen/Core>
 
+#include "control/qp/qp_problem.hpp"
+
 namespace cerebellum::qp {
 
 enum class QpStatus : std::uint8_t {
@@ -40,5 +42,9 @@ struct QpSolution {
   // sizes the members for a problem (no allocation when the sizes are unchanged), clears values
   void reset(Eigen::Index variables, Eigen::Index equalities, Eigen::Index inequalities);
 };
+
+// marks solution InvalidInput (no iterations, NaN objective) and returns true when the problem
+// fails has_valid_shape_and_values; the first step of every solver
+bool reject_invalid_problem(const QpProblem& problem, QpSolution& solution);
 
 }  // namespace cerebellum::qp

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "file_send_lcmt.hpp"
+#include "io/wire_floats.hpp"
 
 namespace cerebellum {
 namespace {
@@ -29,10 +30,6 @@ void copy_floats(const float (&from)[N], std::array<float, N>& to) {
 template <std::size_t N>
 void copy_floats(const std::array<float, N>& from, float (&to)[N]) {
   for (std::size_t i = 0; i < N; ++i) to[i] = from[i];
-}
-
-void put(float* out, const Eigen::Vector3d& v) {
-  for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(v[i]);
 }
 
 }  // namespace
@@ -123,11 +120,11 @@ robot_control_response_lcmt make_response(const HighLevelStatus& status) {
 
 localization_lcmt make_localization(const RobotState& state) {
   localization_lcmt message{};
-  put(message.xyz, state.position_world);
-  put(message.vxyz, state.velocity_world);
-  put(message.rpy, state.rpy);
-  put(message.omegaBody, state.omega_body);
-  put(message.vBody, state.velocity_body);
+  put_vector3(message.xyz, state.position_world);
+  put_vector3(message.vxyz, state.velocity_world);
+  put_vector3(message.rpy, state.rpy);
+  put_vector3(message.omegaBody, state.omega_body);
+  put_vector3(message.vBody, state.velocity_body);
   message.timestamp = static_cast<std::int64_t>(std::llround(state.time_s * 1e9));
   return message;
 }

@@ -4,15 +4,12 @@
 #include <cmath>
 
 #include "core/leg_kinematics.hpp"
+#include "io/wire_floats.hpp"
 
 namespace cerebellum {
 namespace {
 
 constexpr double kSingularDeterminant = 1e-9;
-
-void put(float* out, const Eigen::Vector3d& v) {
-  for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(v[i]);
-}
 
 Vec3 leg_slice(const JointArray<double>& values, std::size_t leg) {
   return {values[joint_index(leg, 0)], values[joint_index(leg, 1)], values[joint_index(leg, 2)]};
@@ -28,21 +25,21 @@ Vec3 foot_force(const Mat3& jacobian, const Vec3& tau) {
 
 state_estimator_lcmt make_state_estimator(const RobotState& state) {
   state_estimator_lcmt message{};
-  put(message.p, state.position_world);
-  put(message.vWorld, state.velocity_world);
-  put(message.vBody, state.velocity_body);
-  put(message.p_abs, state.position_world);
-  put(message.vWorld_abs, state.velocity_world);
-  put(message.vBody_abs, state.velocity_body);
-  put(message.rpy, state.rpy);
-  put(message.omegaBody, state.omega_body);
-  put(message.omegaWorld, state.omega_world);
+  put_vector3(message.p, state.position_world);
+  put_vector3(message.vWorld, state.velocity_world);
+  put_vector3(message.vBody, state.velocity_body);
+  put_vector3(message.p_abs, state.position_world);
+  put_vector3(message.vWorld_abs, state.velocity_world);
+  put_vector3(message.vBody_abs, state.velocity_body);
+  put_vector3(message.rpy, state.rpy);
+  put_vector3(message.omegaBody, state.omega_body);
+  put_vector3(message.omegaWorld, state.omega_world);
   message.quat[0] = static_cast<float>(state.orientation.w());
   message.quat[1] = static_cast<float>(state.orientation.x());
   message.quat[2] = static_cast<float>(state.orientation.y());
   message.quat[3] = static_cast<float>(state.orientation.z());
-  put(message.aBody, state.accel_body);
-  put(message.aWorld, state.accel_world);
+  put_vector3(message.aBody, state.accel_body);
+  put_vector3(message.aWorld, state.accel_world);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) message.contactEstimate[leg] = static_cast<float>(state.contact[leg]);
   message.timestamp = static_cast<std::int64_t>(std::llround(state.time_s * 1e9));
   return message;
@@ -61,10 +58,10 @@ leg_control_data_lcmt make_leg_control_data(const RobotState& state, const Joint
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const Vec3 q_leg = leg_slice(state.q, leg);
     const Mat3 jacobian = foot_jacobian(leg, q_leg);
-    put(&message.p[3 * leg], foot_position_in_hip(leg, q_leg));
-    put(&message.v[3 * leg], jacobian * leg_slice(state.qd, leg));
-    put(&message.force_est[3 * leg], foot_force(jacobian, leg_slice(state.tau, leg)));
-    put(&message.force_desired[3 * leg], foot_force(jacobian, leg_slice(command.tau_ff, leg)));
+    put_vector3(&message.p[3 * leg], foot_position_in_hip(leg, q_leg));
+    put_vector3(&message.v[3 * leg], jacobian * leg_slice(state.qd, leg));
+    put_vector3(&message.force_est[3 * leg], foot_force(jacobian, leg_slice(state.tau, leg)));
+    put_vector3(&message.force_desired[3 * leg], foot_force(jacobian, leg_slice(command.tau_ff, leg)));
   }
   return message;
 }
