@@ -1,6 +1,8 @@
 // Swing trajectories and footholds against hand-computed values and finite differences.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "control/locomotion/foothold.hpp"
 #include "control/locomotion/swing_trajectory.hpp"
 
@@ -36,19 +38,26 @@ TEST(Foothold, RaibertTermsAddUp) {
   FootholdConfig config;
   const Eigen::Vector3d hip(1.0, 0.2, 0.0);
   // no yaw: 0.5 * 0.2 s * 0.5 m/s + 0.1 * (0.5 - 0.4) = 0.05 + 0.01
-  Eigen::Vector3d p = raibert_foothold(hip, {0.5, 0.0, 0.0}, {0.4, 0.0, 0.0}, 0.0, 0.2, 0.25, config);
+  Eigen::Vector3d p = raibert_foothold(hip, {0.5, 0.0, 0.0}, {0.4, 0.0, 0.0}, 0.0, 0.0, 0.2, 0.25, config);
   EXPECT_NEAR(p.x(), 1.06, 1e-12);
   EXPECT_NEAR(p.y(), 0.2, 1e-12);
-  // turning left while moving forward: the centrifugal term moves the foot outwards (-y)
-  p = raibert_foothold(hip, {0.5, 0.0, 0.0}, {0.5, 0.0, 0.0}, 1.0, 0.2, 0.25, config);
-  EXPECT_NEAR(p.y(), 0.2 - 0.5 * std::sqrt(0.25 / 9.81) * 0.5, 1e-12);
+  // turning left at 1 rad/s while moving forward at 0.5 m/s needs 0.5 m/s^2 towards +y: a
+  // pendulum of height 0.25 m gets it from a foot 0.25 / 9.81 * 0.5 m outside the body, half
+  // of which is the offset at touchdown
+  p = raibert_foothold(hip, {0.5, 0.0, 0.0}, {0.5, 0.0, 0.0}, 1.0, 0.0, 0.2, 0.25, config);
+  EXPECT_NEAR(p.y(), 0.2 - 0.5 * 0.25 / 9.81 * 0.5, 1e-12);
 }
 
-TEST(Foothold, OffsetIsClamped) {
+TEST(Foothold, OffsetIsClampedInTheHeadingFrame) {
   FootholdConfig config;
-  const Eigen::Vector3d p = raibert_foothold(Eigen::Vector3d::Zero(), {10.0, -10.0, 0}, {0, 0, 0}, 0.0, 0.3, 0.25, config);
-  EXPECT_DOUBLE_EQ(p.x(), 0.3);
-  EXPECT_DOUBLE_EQ(p.y(), -0.3);
+  Eigen::Vector3d p =
+      raibert_foothold(Eigen::Vector3d::Zero(), {10.0, -10.0, 0}, {0, 0, 0}, 0.0, 0.0, 0.3, 0.25, config);
+  EXPECT_DOUBLE_EQ(p.x(), config.max_offset_forward_m);
+  EXPECT_DOUBLE_EQ(p.y(), -config.max_offset_lateral_m);
+  // heading +y: the body's forward axis is world +y, its left is world -x
+  p = raibert_foothold(Eigen::Vector3d::Zero(), {10.0, 10.0, 0}, {0, 0, 0}, 0.0, M_PI / 2, 0.3, 0.25, config);
+  EXPECT_NEAR(p.y(), config.max_offset_forward_m, 1e-12);
+  EXPECT_NEAR(p.x(), config.max_offset_lateral_m, 1e-12);
 }
 
 }  // namespace

@@ -1,26 +1,31 @@
 #include "control/locomotion/foothold.hpp"
 
+#include <Eigen/Geometry>
 #include <algorithm>
 
 namespace cerebellum {
 
 Eigen::Vector3d raibert_foothold(const Eigen::Vector3d& hip_world, const Eigen::Vector3d& velocity,
-                                 const Eigen::Vector3d& velocity_desired, double yaw_rate_desired,
+                                 const Eigen::Vector3d& velocity_desired, double yaw_rate_desired, double yaw,
                                  double stance_duration_s, double body_height_m, const FootholdConfig& config) {
-  Eigen::Vector3d offset = Eigen::Vector3d::Zero();
+  Eigen::Vector2d offset = Eigen::Vector2d::Zero();
   for (int axis = 0; axis < 2; ++axis) {
     // symmetric stance about the hip, corrected by the velocity error
     offset[axis] = 0.5 * stance_duration_s * velocity[axis] +
                    config.velocity_gain * (velocity[axis] - velocity_desired[axis]);
   }
-  // centrifugal term: 0.5 sqrt(h / g) (v x omega_des)
-  const double centrifugal = 0.5 * std::sqrt(std::max(body_height_m, 0.0) / 9.81);
+  // centrifugal term: the foot goes outwards by half the pendulum offset (h / g) a that carries the
+  // centripetal acceleration a = v x omega_des through the stance
+  const double centrifugal = 0.5 * std::max(body_height_m, 0.0) / 9.81;
   offset.x() += centrifugal * (velocity.y() * yaw_rate_desired);
   offset.y() += centrifugal * (-velocity.x() * yaw_rate_desired);
-  for (int axis = 0; axis < 2; ++axis) offset[axis] = std::clamp(offset[axis], -config.max_offset_m, config.max_offset_m);
-  Eigen::Vector3d foothold = hip_world + offset;
-  foothold.z() = hip_world.z();
-  return foothold;
+  // clamp in the heading frame
+  const Eigen::Rotation2Dd heading(yaw);
+  Eigen::Vector2d local = heading.inverse() * offset;
+  local.x() = std::clamp(local.x(), -config.max_offset_forward_m, config.max_offset_forward_m);
+  local.y() = std::clamp(local.y(), -config.max_offset_lateral_m, config.max_offset_lateral_m);
+  offset = heading * local;
+  return {hip_world.x() + offset.x(), hip_world.y() + offset.y(), hip_world.z()};
 }
 
 }  // namespace cerebellum

@@ -6,14 +6,18 @@
 namespace cerebellum {
 
 struct FootholdConfig {
-  double velocity_gain = 0.1;     // k in k (v - v_des)
-  double max_offset_m = 0.3;      // clamp of the offset from the hip, per axis
+  double velocity_gain = 0.1;  // k in k (v - v_des)
+  // clamp of the offset from the hip in the heading frame: what a leg reaches at standing height
+  // (thigh 0.12 + shank 0.174 at 0.25 m height reach 0.15 m forward; the abad range ~0.08 m sideways)
+  double max_offset_forward_m = 0.15;
+  double max_offset_lateral_m = 0.08;
 };
 
 // hip_world: the hip's position under the body at touchdown (world, on the ground plane);
-// velocities in the world frame; stance duration in seconds; body height for the centrifugal term
+// velocities in the world frame; heading (yaw) of the body; stance duration in seconds; body
+// height for the centrifugal term
 Eigen::Vector3d raibert_foothold(const Eigen::Vector3d& hip_world, const Eigen::Vector3d& velocity,
-                                 const Eigen::Vector3d& velocity_desired, double yaw_rate_desired,
+                                 const Eigen::Vector3d& velocity_desired, double yaw_rate_desired, double yaw,
                                  double stance_duration_s, double body_height_m, const FootholdConfig& config);
 
 }  // namespace cerebellum

@@ -100,12 +100,12 @@ void LocomotionController::ramp_velocity() {
 }
 
 Eigen::Vector3d LocomotionController::hip_on_ground_world(std::size_t leg, const RobotState& state,
-                                                          double ahead_s) const {
+                                                          double ahead_s, double yaw_ahead_s) const {
   const double half_width =
       target_.vertical_legs ? config_.vertical_leg_half_width_m : config_.pigeon_toe_half_width_m;
   const Eigen::Vector3d hip_body(is_front_leg(leg) ? robot::kHipX : -robot::kHipX,
                                  leg_side_sign(leg) * half_width, 0.0);
-  const double yaw_ahead = state.rpy.z() + velocity_.z() * ahead_s;
+  const double yaw_ahead = state.rpy.z() + velocity_.z() * yaw_ahead_s;
   const Eigen::Vector3d velocity_world = yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0);
   Eigen::Vector3d hip = state.position_world + yaw_rotation(yaw_ahead) * hip_body + velocity_world * ahead_s;
   hip.z() = ground_.plane().height_at(hip.x(), hip.y());  // the ground plane under the hip
@@ -189,11 +189,15 @@ void LocomotionController::command_stance_leg(std::size_t leg, const RobotState&
 void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& phase, const RobotState& state,
                                              JointCommand& command) {
   const double remaining_s = (1.0 - phase.swing_phase) * phase.swing_duration_s;
-  const Eigen::Vector3d hip = hip_on_ground_world(leg, state, remaining_s);
+  // the hip where the body will be at touchdown, turned on by half the stance so that the
+  // foot is under the hip in the middle of its stance
+  const Eigen::Vector3d hip =
+      hip_on_ground_world(leg, state, remaining_s, remaining_s + 0.5 * phase.stance_duration_s);
   const Eigen::Vector3d velocity_des_world =
       yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
   Eigen::Vector3d foothold = raibert_foothold(hip, state.velocity_world, velocity_des_world, velocity_.z(),
-                                              phase.stance_duration_s, target_.height_m, config_.foothold);
+                                              state.rpy.z(), phase.stance_duration_s, target_.height_m,
+                                              config_.foothold);
   foothold.z() += robot::kFootRadius;  // foot centre above the ground
   const double height = is_front_leg(leg) ? target_.step_height_front_m : target_.step_height_rear_m;
   const SwingPoint point =

@@ -85,7 +85,8 @@ class LocomotionController {
   void collect_mpc();
   void command_swing_leg(std::size_t leg, const LegPhase& phase, const RobotState& state, JointCommand& command);
   void command_stance_leg(std::size_t leg, const RobotState& state, JointCommand& command);
-  Eigen::Vector3d hip_on_ground_world(std::size_t leg, const RobotState& state, double ahead_s) const;
+  Eigen::Vector3d hip_on_ground_world(std::size_t leg, const RobotState& state, double ahead_s,
+                                      double yaw_ahead_s) const;
 
   LocomotionConfig config_;
   ConvexMpc mpc_;
