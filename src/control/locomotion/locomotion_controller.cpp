@@ -54,6 +54,8 @@ void LocomotionController::reset(const RobotState& state) {
   height_correction_m_ = 0.0;
   tick_in_segment_ = 0;
   was_stance_.fill(true);
+  swing_frame_ = state.orientation.toRotationMatrix();
+  in_flight_ = false;
   std::array<Eigen::Vector3d, kNumLegs> feet;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) feet[leg] = foot_on_ground_world(state, leg);
   ground_.reset(feet);
@@ -78,6 +80,11 @@ bool LocomotionController::set_command(const LocomotionTarget& command) {
     // a stand gait allows no velocity: the gait still stepping while it waits brings the body to rest
     target_.velocity[axis] =
         std::clamp(command.velocity[axis], command.gait.velocity_min[axis], command.gait.velocity_max[axis]);
+  }
+  // the turn rate at speed is limited by the centripetal acceleration the feet can carry
+  const double speed = target_.velocity.head<2>().norm();
+  if (speed * std::abs(target_.velocity.z()) > config_.max_centripetal_accel_m_s2) {
+    target_.velocity.z() = std::copysign(config_.max_centripetal_accel_m_s2 / speed, target_.velocity.z());
   }
   if (new_gait) {
     pending_gait_ = command.gait;
@@ -203,10 +210,12 @@ void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& ph
   const SwingPoint point =
       swing_point(swing_start_[leg], foothold, height, phase.swing_phase, std::max(phase.swing_duration_s, 1e-3));
 
-  const Eigen::Matrix3d world_to_body = state.orientation.toRotationMatrix().transpose();
+  // in flight the legs follow their targets in the attitude of the takeoff: tracking world targets
+  // from a rolling body would swing the legs against the roll and spin the body further
+  const Eigen::Matrix3d world_to_body = swing_frame_.transpose();
   const Eigen::Vector3d p_body = world_to_body * (point.position - state.position_world);
-  const Eigen::Vector3d v_body =
-      world_to_body * (point.velocity - state.velocity_world) - state.omega_body.cross(p_body);
+  Eigen::Vector3d v_body = world_to_body * (point.velocity - state.velocity_world);
+  if (!in_flight_) v_body -= state.omega_body.cross(p_body);
   const LegIkResult ik = inverse_kinematics_in_body(leg, p_body);
   const Eigen::Matrix3d jacobian = foot_jacobian(leg, ik.q);
   Eigen::Vector3d qd_des = Eigen::Vector3d::Zero();
@@ -230,9 +239,13 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
     next = pending_gait_;
     gait_change_pending_ = false;
   }
-  // the variable-frequency trot steps faster as the commanded speed grows
-  // (turning counts as the speed of a hip 0.2 m from the centre)
-  if (next.adapts_frequency) next = variable_trot_pattern(velocity_.head<2>().norm() + 0.2 * std::abs(velocity_.z()));
+  // the variable-frequency trot steps faster as the commanded speed grows (a sideways step reaches
+  // about a third as far as a forward one, so lateral speed counts three times; turning counts as
+  // the speed of a hip 0.2 m from the centre)
+  if (next.adapts_frequency) {
+    const double stride_speed = std::hypot(velocity_.x(), 3.0 * velocity_.y()) + 0.2 * std::abs(velocity_.z());
+    next = variable_trot_pattern(stride_speed);
+  }
   if (next.id == scheduler_.pattern().id && next.period_segments == scheduler_.pattern().period_segments) return;
   scheduler_.set_pattern(next);
   // feet already in the air start their new swing from where they are
@@ -256,6 +269,10 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
     post_mpc(state);
   }
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
+  bool flight = true;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) flight &= !scheduler_.leg_phase(leg).stance;
+  if (!flight) swing_frame_ = body_to_world;
+  in_flight_ = flight;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const LegPhase phase = scheduler_.leg_phase(leg);
     if (phase.stance) {

@@ -31,6 +31,9 @@ struct LocomotionConfig {
   double height_integral_limit_m = 0.03;
   double max_accel_m_s2 = 2.0;        // ramp of the commanded velocity
   double max_yaw_accel_rad_s2 = 6.0;
+  // |v| |yaw rate| above this (m/s^2) is clamped by lowering the yaw rate: friction 0.4 allows at
+  // most 3.9 m/s^2 with no margin for the gait's own forces
+  double max_centripetal_accel_m_s2 = 2.5;
   double vertical_leg_half_width_m = 0.136;  // value bit1 = 1: feet under the hips
   double pigeon_toe_half_width_m = 0.11;     // value bit1 = 0: energy-saving narrower stance
   Eigen::Vector3d com_offset_body{0.013, 0.0, 0.0};
@@ -101,6 +104,9 @@ class LocomotionController {
   int tick_in_segment_ = 0;
   std::array<bool, kNumLegs> was_stance_{};
   std::array<Eigen::Vector3d, kNumLegs> swing_start_{};
+  // body to world rotation the swing legs use: the measured one, frozen while all feet are in the air
+  Eigen::Matrix3d swing_frame_ = Eigen::Matrix3d::Identity();
+  bool in_flight_ = false;
   std::array<Eigen::Vector3d, kNumLegs> forces_{};
   GroundPlaneTracker ground_;
   MpcInput mpc_input_;
