@@ -95,6 +95,32 @@ TEST(Walking, VelocityBeyondTheGaitsLimitIsClampedAndNanIsRefused) {
   EXPECT_TRUE(sim.upright());
 }
 
+TEST(Walking, TurnRateAtSpeedIsLimitedByTheCentripetalAccelerationAndTheRobotStaysUp) {
+  WalkingSim sim;
+  const LocomotionConfig limits;
+  sim.controller.set(walk_command(10, 1.6, 0.0, 2.5));  // 4 m/s^2 asked; friction 0.4 carries 3.9
+  bool upright = true;
+  sim.run_until(kStart);
+  sim.run_until(kStart + 4.0, [&](const CycleRecord&) { upright &= sim.upright(); });
+  EXPECT_TRUE(upright);
+  EXPECT_NEAR(sim.controller.walker().ramped_velocity().z(), limits.max_centripetal_accel_m_s2 / 1.6, 1e-9);
+  EXPECT_NEAR(sim.controller.walker().ramped_velocity().x(), 1.6, 1e-9);
+}
+
+TEST(Walking, PronksSidewaysWithoutRollingOver) {
+  // all four legs swing together in flight: a rolling body must not drive them to roll it further
+  WalkingSim sim;
+  sim.controller.set(walk_command(2, 0.0, 0.15));
+  double worst_roll = 0.0;
+  sim.run_until(kStart);
+  sim.run_until(kStart + 5.0, [&](const CycleRecord& record) {
+    worst_roll = std::max(worst_roll, std::abs(record.state.rpy.x()));
+  });
+  EXPECT_TRUE(sim.upright());
+  EXPECT_LT(worst_roll, 0.3);
+  EXPECT_GT(sim.backend.ground_truth().velocity_world[1], 0.05);
+}
+
 // a solver that always fails, to prove the controller notices
 class FailingSolver final : public qp::QpSolver {
  public:
