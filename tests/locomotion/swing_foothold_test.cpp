@@ -1,6 +1,7 @@
 // Swing trajectories and footholds against hand-computed values and finite differences.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "control/locomotion/foothold.hpp"
@@ -50,14 +51,24 @@ TEST(Foothold, RaibertTermsAddUp) {
 
 TEST(Foothold, OffsetIsClampedInTheHeadingFrame) {
   FootholdConfig config;
+  // running as commanded at 3 m/s each way: 0.45 m asked, the leg's reach given
   Eigen::Vector3d p =
-      raibert_foothold(Eigen::Vector3d::Zero(), {10.0, -10.0, 0}, {0, 0, 0}, 0.0, 0.0, 0.3, 0.25, config);
+      raibert_foothold(Eigen::Vector3d::Zero(), {3.0, -3.0, 0}, {3.0, -3.0, 0}, 0.0, 0.0, 0.3, 0.25, config);
   EXPECT_DOUBLE_EQ(p.x(), config.max_offset_forward_m);
   EXPECT_DOUBLE_EQ(p.y(), -config.max_offset_lateral_m);
   // heading +y: the body's forward axis is world +y, its left is world -x
-  p = raibert_foothold(Eigen::Vector3d::Zero(), {10.0, 10.0, 0}, {0, 0, 0}, 0.0, M_PI / 2, 0.3, 0.25, config);
+  p = raibert_foothold(Eigen::Vector3d::Zero(), {3.0, 3.0, 0}, {3.0, 3.0, 0}, 0.0, M_PI / 2, 0.3, 0.25, config);
   EXPECT_NEAR(p.y(), config.max_offset_forward_m, 1e-12);
   EXPECT_NEAR(p.x(), config.max_offset_lateral_m, 1e-12);
+}
+
+TEST(Foothold, APushIsCaughtWithTheLongestStep) {
+  FootholdConfig config;
+  // 1 m/s sideways against a command of rest: beyond the push threshold
+  const Eigen::Vector3d p =
+      raibert_foothold(Eigen::Vector3d::Zero(), {0.0, 1.0, 0}, {0, 0, 0}, 0.0, 0.0, 0.3, 0.25, config);
+  EXPECT_NEAR(p.y(), std::min(0.5 * 0.3 * 1.0 + config.velocity_gain * 1.0, config.max_offset_push_m), 1e-12);
+  EXPECT_GT(p.y(), config.max_offset_lateral_m);
 }
 
 }  // namespace

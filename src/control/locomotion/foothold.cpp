@@ -22,8 +22,11 @@ Eigen::Vector3d raibert_foothold(const Eigen::Vector3d& hip_world, const Eigen::
   // clamp in the heading frame
   const Eigen::Rotation2Dd heading(yaw);
   Eigen::Vector2d local = heading.inverse() * offset;
-  local.x() = std::clamp(local.x(), -config.max_offset_forward_m, config.max_offset_forward_m);
-  local.y() = std::clamp(local.y(), -config.max_offset_lateral_m, config.max_offset_lateral_m);
+  const bool pushed = (velocity - velocity_desired).head<2>().norm() > config.push_velocity_error_m_s;
+  const double forward = pushed ? config.max_offset_push_m : config.max_offset_forward_m;
+  const double lateral = pushed ? config.max_offset_push_m : config.max_offset_lateral_m;
+  local.x() = std::clamp(local.x(), -forward, forward);
+  local.y() = std::clamp(local.y(), -lateral, lateral);
   offset = heading * local;
   return {hip_world.x() + offset.x(), hip_world.y() + offset.y(), hip_world.z()};
 }

@@ -11,6 +11,9 @@ struct FootholdConfig {
   // (thigh 0.12 + shank 0.174 at 0.25 m height reach 0.15 m forward; the abad range ~0.08 m sideways)
   double max_offset_forward_m = 0.15;
   double max_offset_lateral_m = 0.08;
+  // a push (velocity error above this) is caught with steps as far as the leg stretches
+  double push_velocity_error_m_s = 0.5;
+  double max_offset_push_m = 0.3;
 };
 
 // hip_world: the hip's position under the body at touchdown (world, on the ground plane);
