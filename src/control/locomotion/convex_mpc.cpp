@@ -25,6 +25,9 @@ bool input_is_finite(const MpcInput& input) {
   for (const auto& r : input.foot_from_com) {
     if (!r.allFinite()) return false;
   }
+  for (const auto& shift : input.com_shift) {
+    if (!shift.allFinite()) return false;
+  }
   return true;
 }
 
@@ -72,26 +75,44 @@ void ConvexMpc::discretize(const Eigen::Matrix<double, kSrbStates, kSrbStates>& 
   bd = exponential.topRightCorner<kSrbStates, kInputs>();
 }
 
-void ConvexMpc::build(const MpcInput& input) {
-  // discrete dynamics at the current yaw and foot positions, used over the whole horizon
-  Eigen::Matrix<double, kSrbStates, kSrbStates> a, ad;
-  Eigen::Matrix<double, kSrbStates, kInputs> b, bd;
-  continuous_dynamics(config_, input.x0[2], input.foot_from_com, a, b);
-  discretize(a, b, config_.dt_s, ad, bd);
+Eigen::Matrix<double, kSrbStates, kSrbStates> ConvexMpc::hold_integral(
+    const Eigen::Matrix<double, kSrbStates, kSrbStates>& a, double dt) {
+  // exp([[A, I], [0, 0]] dt) holds the integral in its top right block
+  Eigen::Matrix<double, 2 * kSrbStates, 2 * kSrbStates> augmented;
+  augmented.setZero();
+  augmented.topLeftCorner<kSrbStates, kSrbStates>() = a * dt;
+  augmented.topRightCorner<kSrbStates, kSrbStates>() = Eigen::Matrix<double, kSrbStates, kSrbStates>::Identity() * dt;
+  const Eigen::Matrix<double, 2 * kSrbStates, 2 * kSrbStates> exponential = augmented.exp();
+  return exponential.topRightCorner<kSrbStates, kSrbStates>();
+}
 
-  // condensed prediction: block (i, j) of Bqp = Ad^(i-j) Bd for j <= i
+void ConvexMpc::build(const MpcInput& input) {
+  // discrete dynamics at the current yaw; the feet's lever arms follow the COM along the horizon
+  Eigen::Matrix<double, kSrbStates, kSrbStates> a;
+  Eigen::Matrix<double, kSrbStates, kInputs> b;
+  continuous_dynamics(config_, input.x0[2], input.foot_from_com, a, b);
+  const Eigen::Matrix<double, kSrbStates, kSrbStates> ad = (a * config_.dt_s).exp();
+  const Eigen::Matrix<double, kSrbStates, kSrbStates> hold = hold_integral(a, config_.dt_s);
+  std::array<Eigen::Matrix<double, kSrbStates, kInputs>, kMpcHorizon> bd;
+  std::array<Eigen::Vector3d, kNumLegs> lever;
+  for (int k = 0; k < kMpcHorizon; ++k) {
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) lever[leg] = input.foot_from_com[leg] - input.com_shift[k];
+    continuous_dynamics(config_, input.x0[2], lever, a, b);
+    bd[k] = hold * b;
+  }
+
+  // condensed prediction: block (i, j) of Bqp = Ad^(i-j) Bd_j for j <= i
   Eigen::Matrix<double, kSrbStates, kSrbStates> power = ad;
-  std::array<Eigen::Matrix<double, kSrbStates, kInputs>, kMpcHorizon> powers_b;
-  powers_b[0] = bd;
   for (int i = 0; i < kMpcHorizon; ++i) {
     a_qp_.block<kSrbStates, kSrbStates>(kSrbStates * i, 0) = power;
-    if (i + 1 < kMpcHorizon) {
-      powers_b[i + 1] = power * bd;
-      power = ad * power;
-    }
+    power = ad * power;
   }
-  for (int i = 0; i < kMpcHorizon; ++i) {
-    for (int j = 0; j <= i; ++j) b_qp_.block<kSrbStates, kInputs>(kSrbStates * i, kInputs * j) = powers_b[i - j];
+  for (int j = 0; j < kMpcHorizon; ++j) {
+    Eigen::Matrix<double, kSrbStates, kInputs> propagated = bd[j];
+    for (int i = j; i < kMpcHorizon; ++i) {
+      b_qp_.block<kSrbStates, kInputs>(kSrbStates * i, kInputs * j) = propagated;
+      if (i + 1 < kMpcHorizon) propagated = ad * propagated;
+    }
   }
 
   // keep the force variables of feet in stance

@@ -23,7 +23,7 @@ struct ConvexMpcConfig {
   double mass_kg = 8.3644;
   Eigen::Vector3d inertia_diag{0.07641, 0.17843, 0.197579};
   // state weights: roll, pitch, yaw, x, y, z, wx, wy, wz, vx, vy, vz
-  std::array<double, 12> state_weights{0.25, 0.25, 10, 2, 2, 50, 0, 0, 0.3, 0.2, 0.2, 0.1};
+  std::array<double, 12> state_weights{1.0, 0.25, 10, 2, 2, 50, 0, 0, 0.3, 0.2, 0.2, 0.1};
   double force_weight = 4e-5;
   double friction = 0.4;
   double force_max_n = 150.0;
@@ -34,8 +34,17 @@ struct MpcInput {
   Eigen::Matrix<double, kSrbStates, 1> x0;  // current state (g entry = -9.81)
   // reference trajectory, one state per horizon step (k = 1..horizon)
   std::array<Eigen::Matrix<double, kSrbStates, 1>, kMpcHorizon> x_ref;
-  // foot positions relative to the COM, world frame
+  // foot positions relative to the COM now, world frame (a foot in the air: where it will land)
   std::array<Eigen::Vector3d, kNumLegs> foot_from_com;
+  // how far the COM has moved at the start of each horizon step (zero for the first): the feet's
+  // lever arms at step k are foot_from_com - com_shift[k]
+  std::array<Eigen::Vector3d, kMpcHorizon> com_shift = zero_shifts();
+
+  static std::array<Eigen::Vector3d, kMpcHorizon> zero_shifts() {
+    std::array<Eigen::Vector3d, kMpcHorizon> shifts;
+    for (auto& shift : shifts) shift.setZero();
+    return shifts;
+  }
   // contact table over the horizon
   std::array<std::array<bool, kNumLegs>, kMpcHorizon> contact;
 };
@@ -62,6 +71,9 @@ class ConvexMpc {
                                   const std::array<Eigen::Vector3d, kNumLegs>& foot_from_com,
                                   Eigen::Matrix<double, kSrbStates, kSrbStates>& a,
                                   Eigen::Matrix<double, kSrbStates, 3 * kNumLegs>& b);
+  // the input matrix's zero-order-hold factor: Bd = G B with G = integral of exp(A s) over [0, dt]
+  static Eigen::Matrix<double, kSrbStates, kSrbStates> hold_integral(
+      const Eigen::Matrix<double, kSrbStates, kSrbStates>& a, double dt);
   // exact zero-order-hold discretisation through the matrix exponential of [[A, B], [0, 0]] dt
   static void discretize(const Eigen::Matrix<double, kSrbStates, kSrbStates>& a,
                          const Eigen::Matrix<double, kSrbStates, 3 * kNumLegs>& b, double dt,

@@ -39,6 +39,13 @@ std::optional<GaitPattern> gait_pattern(int gait_id) {
   }
 }
 
+bool legs_swing_together(const GaitPattern& pattern) {
+  for (std::size_t leg = 1; leg < kNumLegs; ++leg) {
+    if (pattern.offsets[leg] != pattern.offsets[0] || pattern.stance[leg] != pattern.stance[0]) return false;
+  }
+  return pattern.stance[0] < pattern.period_segments;
+}
+
 GaitPattern variable_trot_pattern(double speed_m_s) {
   // one step per 0.2 m/s of speed
   const int step = std::clamp(static_cast<int>(std::floor(std::abs(speed_m_s) / 0.2)), 0,

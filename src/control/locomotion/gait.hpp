@@ -23,6 +23,9 @@ struct GaitPattern {
 // the pattern of a gait id of the reference table, or nothing for an unknown id
 std::optional<GaitPattern> gait_pattern(int gait_id);
 
+// true for a hop (pronk): every leg lifts and lands together
+bool legs_swing_together(const GaitPattern& pattern);
+
 // the variable-frequency trot's pattern for a commanded speed (m/s)
 GaitPattern variable_trot_pattern(double speed_m_s);
 

@@ -4,6 +4,7 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
+#include <cstdlib>
 
 #include "control/locomotion/swing_trajectory.hpp"
 #include "core/leg_kinematics.hpp"
@@ -34,9 +35,16 @@ Eigen::Vector3d foot_on_ground_world(const RobotState& state, std::size_t leg) {
 
 }  // namespace
 
+static LocomotionConfig exp_override(LocomotionConfig c) {  // EXPERIMENT
+  if (const char* e = std::getenv("X_ROLL")) c.mpc.state_weights[0] = std::atof(e);
+  if (const char* e = std::getenv("X_PITCH")) c.mpc.state_weights[1] = std::atof(e);
+  if (const char* e = std::getenv("X_HOP")) c.hop_step_height_fraction = std::atof(e);
+  if (const char* e = std::getenv("X_WXY")) c.mpc.state_weights[6] = c.mpc.state_weights[7] = std::atof(e);
+  return c;
+}
 LocomotionController::LocomotionController(const LocomotionConfig& config, std::unique_ptr<qp::QpSolver> solver)
-    : config_(config),
-      mpc_(config.mpc, std::move(solver)),
+    : config_(exp_override(config)),
+      mpc_(config_.mpc, std::move(solver)),
       worker_(mpc_),
       scheduler_(config.tick_s * config.ticks_per_segment),
       ground_(config.ground) {
@@ -144,6 +152,7 @@ void LocomotionController::post_mpc(const RobotState& state) {
   for (int k = 0; k < kMpcHorizon; ++k) {
     const double yaw_k = yaw + yaw_offset + velocity_.z() * (k + 1) * dt;
     const Eigen::Vector3d velocity_world = yaw_rotation(yaw_k) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
+    in.com_shift[k] = position - state.position_world;
     position += velocity_world * dt;
     auto& x = in.x_ref[k];
     const double ground_z = ground_.plane().height_at(position.x(), position.y());
@@ -151,8 +160,13 @@ void LocomotionController::post_mpc(const RobotState& state) {
         0.0, 0.0, velocity_.z(), velocity_world.x(), velocity_world.y(), 0.0, -9.81;
   }
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
+  const Eigen::Vector3d com_world = state.position_world + body_to_world * config_.com_offset_body;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    in.foot_from_com[leg] = body_to_world * (state.foot_position_body[leg] - config_.com_offset_body);
+    // a foot in the air pushes next from where it will land
+    const LegPhase phase = scheduler_.leg_phase(leg);
+    in.foot_from_com[leg] = phase.stance ? Eigen::Vector3d(body_to_world * (state.foot_position_body[leg] -
+                                                                           config_.com_offset_body))
+                                         : Eigen::Vector3d(foothold_world(leg, phase, state) - com_world);
   }
   in.contact = scheduler_.horizon_contacts<kMpcHorizon>();
   worker_.post(in);
@@ -193,8 +207,8 @@ void LocomotionController::command_stance_leg(std::size_t leg, const RobotState&
   }
 }
 
-void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& phase, const RobotState& state,
-                                             JointCommand& command) {
+Eigen::Vector3d LocomotionController::foothold_world(std::size_t leg, const LegPhase& phase,
+                                                     const RobotState& state) const {
   const double remaining_s = (1.0 - phase.swing_phase) * phase.swing_duration_s;
   // the hip where the body will be at touchdown, turned on by half the stance so that the
   // foot is under the hip in the middle of its stance
@@ -206,7 +220,16 @@ void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& ph
                                               state.rpy.z(), phase.stance_duration_s, target_.height_m,
                                               config_.foothold);
   foothold.z() += robot::kFootRadius;  // foot centre above the ground
-  const double height = is_front_leg(leg) ? target_.step_height_front_m : target_.step_height_rear_m;
+  return foothold;
+}
+
+void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& phase, const RobotState& state,
+                                             JointCommand& command) {
+  const Eigen::Vector3d foothold = foothold_world(leg, phase, state);
+  // in a hop the body's own rise clears the ground: lifting the feet the full step height in the
+  // air swings the legs hard enough to pitch the body
+  const double lift = legs_swing_together(scheduler_.pattern()) ? config_.hop_step_height_fraction : 1.0;
+  const double height = lift * (is_front_leg(leg) ? target_.step_height_front_m : target_.step_height_rear_m);
   const SwingPoint point =
       swing_point(swing_start_[leg], foothold, height, phase.swing_phase, std::max(phase.swing_duration_s, 1e-3));
 
@@ -232,10 +255,16 @@ void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& ph
 
 void LocomotionController::change_pattern_if_due(const RobotState& state) {
   GaitPattern next = scheduler_.pattern();
-  // a stand gait cannot stop a moving body: keep stepping until it has slowed down
+  // a gait takes over only at a speed it can step at: the current one slows the body down to the
+  // new gait's limits first (a stand gait cannot stop a moving body at all)
+  bool within_limits = true;
+  for (int axis = 0; axis < 3; ++axis) {
+    within_limits &= velocity_[axis] >= pending_gait_.velocity_min[axis] - config_.gait_switch_velocity_margin &&
+                     velocity_[axis] <= pending_gait_.velocity_max[axis] + config_.gait_switch_velocity_margin;
+  }
   const bool to_stand = pending_gait_.stance[0] == pending_gait_.period_segments;
-  const bool moving = velocity_.head<2>().norm() > 0.05 || state.velocity_world.head<2>().norm() > 0.15;
-  if (gait_change_pending_ && !(to_stand && moving)) {
+  const bool moving = state.velocity_world.head<2>().norm() > 0.15;
+  if (gait_change_pending_ && within_limits && !(to_stand && moving)) {
     next = pending_gait_;
     gait_change_pending_ = false;
   }

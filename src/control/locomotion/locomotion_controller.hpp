@@ -23,6 +23,7 @@ struct LocomotionConfig {
   FootholdConfig foothold;
   double default_height_m = 0.25;
   double default_step_height_m = 0.06;
+  double hop_step_height_fraction = 0.3;  // pronk: share of the step height the feet are lifted
   double swing_kp = 40.0;  // joint gains tracking the swing trajectory (motor PD at 1 kHz)
   double swing_kd = 1.0;
   double stance_kd = 0.8;  // joint damping toward a foot at rest on the ground
@@ -31,6 +32,8 @@ struct LocomotionConfig {
   double height_integral_limit_m = 0.03;
   double max_accel_m_s2 = 2.0;        // ramp of the commanded velocity
   double max_yaw_accel_rad_s2 = 6.0;
+  // a new gait starts once the ramped velocity is this close to its limits (m/s, rad/s)
+  double gait_switch_velocity_margin = 0.05;
   // |v| |yaw rate| above this (m/s^2) is clamped by lowering the yaw rate: friction 0.4 allows at
   // most 3.9 m/s^2 with no margin for the gait's own forces
   double max_centripetal_accel_m_s2 = 2.5;
@@ -86,6 +89,8 @@ class LocomotionController {
   void change_pattern_if_due(const RobotState& state);
   void post_mpc(const RobotState& state);
   void collect_mpc();
+  // where a swinging foot (its centre) will land
+  Eigen::Vector3d foothold_world(std::size_t leg, const LegPhase& phase, const RobotState& state) const;
   void command_swing_leg(std::size_t leg, const LegPhase& phase, const RobotState& state, JointCommand& command);
   void command_stance_leg(std::size_t leg, const RobotState& state, JointCommand& command);
   Eigen::Vector3d hip_on_ground_world(std::size_t leg, const RobotState& state, double ahead_s,
