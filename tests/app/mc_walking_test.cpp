@@ -102,7 +102,7 @@ TEST(McWalking, ClimbsTheTenDegreeRamp) {
   LockstepClient client(mc);
   client.run(command(ModeId::RecoveryStand, 0), 3.0);
   bool upright = true;
-  client.run(command(ModeId::Locomotion, 27, 0.4), 14.0, [&](const CycleRecord& record) {
+  client.run(command(ModeId::Locomotion, 27, 0.4), 16.0, [&](const CycleRecord& record) {
     upright &= std::abs(record.state.rpy.x()) < 0.5 && std::abs(record.state.rpy.y()) < 0.5;
   });
   EXPECT_TRUE(upright);

@@ -4,7 +4,6 @@
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 
 #include "control/locomotion/swing_trajectory.hpp"
 #include "core/leg_kinematics.hpp"
@@ -35,15 +34,8 @@ Eigen::Vector3d foot_on_ground_world(const RobotState& state, std::size_t leg) {
 
 }  // namespace
 
-static LocomotionConfig exp_override(LocomotionConfig c) {  // EXPERIMENT
-  if (const char* e = std::getenv("X_ROLL")) c.mpc.state_weights[0] = std::atof(e);
-  if (const char* e = std::getenv("X_PITCH")) c.mpc.state_weights[1] = std::atof(e);
-  if (const char* e = std::getenv("X_HOP")) c.hop_step_height_fraction = std::atof(e);
-  if (const char* e = std::getenv("X_WXY")) c.mpc.state_weights[6] = c.mpc.state_weights[7] = std::atof(e);
-  return c;
-}
 LocomotionController::LocomotionController(const LocomotionConfig& config, std::unique_ptr<qp::QpSolver> solver)
-    : config_(exp_override(config)),
+    : config_(config),
       mpc_(config_.mpc, std::move(solver)),
       worker_(mpc_),
       scheduler_(config.tick_s * config.ticks_per_segment),
@@ -59,6 +51,7 @@ void LocomotionController::reset(const RobotState& state) {
   gait_change_pending_ = false;
   velocity_.setZero();
   yaw_des_ = state.rpy.z();
+  position_des_ = state.position_world.head<2>();
   height_correction_m_ = 0.0;
   tick_in_segment_ = 0;
   was_stance_.fill(true);
@@ -148,11 +141,11 @@ void LocomotionController::post_mpc(const RobotState& state) {
   const double pitch_ref = target_.pitch_rad + ground_.pitch_along(yaw);
   const double roll_ref = ground_.roll_along(yaw);
   // the reference turns with the commanded yaw rate: velocity and position follow the arc
-  Eigen::Vector3d position = state.position_world;
+  Eigen::Vector3d position(position_des_.x(), position_des_.y(), state.position_world.z());
   for (int k = 0; k < kMpcHorizon; ++k) {
     const double yaw_k = yaw + yaw_offset + velocity_.z() * (k + 1) * dt;
     const Eigen::Vector3d velocity_world = yaw_rotation(yaw_k) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
-    in.com_shift[k] = position - state.position_world;
+    in.com_shift[k] = position - Eigen::Vector3d(position_des_.x(), position_des_.y(), state.position_world.z());
     position += velocity_world * dt;
     auto& x = in.x_ref[k];
     const double ground_z = ground_.plane().height_at(position.x(), position.y());
@@ -287,6 +280,14 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
 void LocomotionController::compute(const RobotState& state, JointCommand& command) {
   ramp_velocity();
   yaw_des_ = wrap_angle(yaw_des_ + velocity_.z() * config_.tick_s);
+  // where the commanded velocity would have taken the trunk, at most a set distance ahead or behind
+  // (the MPC's only integral action: leg friction and swing momentum otherwise slow it down)
+  position_des_ += (yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0)).head<2>() *
+                   config_.tick_s;
+  const Eigen::Vector2d lag = position_des_ - state.position_world.head<2>();
+  if (lag.norm() > config_.max_position_lag_m) {
+    position_des_ = state.position_world.head<2>() + lag.normalized() * config_.max_position_lag_m;
+  }
   height_correction_m_ = std::clamp(
       height_correction_m_ + config_.height_integral_gain * (target_.height_m - state.height_m) * config_.tick_s,
       -config_.height_integral_limit_m, config_.height_integral_limit_m);

@@ -26,17 +26,21 @@ struct LocomotionConfig {
   double hop_step_height_fraction = 0.3;  // pronk: share of the step height the feet are lifted
   double swing_kp = 40.0;  // joint gains tracking the swing trajectory (motor PD at 1 kHz)
   double swing_kd = 1.0;
-  double stance_kd = 0.8;  // joint damping toward a foot at rest on the ground
+  // joint damping toward a foot at rest on the ground; its forces are outside the MPC's friction
+  // cone, and at 0.8 they made loaded feet slip in turns
+  double stance_kd = 0.3;
   // slow integral on the height error: joint friction otherwise leaves a steady offset
   double height_integral_gain = 2.0;  // 1/s
   double height_integral_limit_m = 0.03;
   double max_accel_m_s2 = 2.0;        // ramp of the commanded velocity
   double max_yaw_accel_rad_s2 = 6.0;
+  // the position reference runs at most this far from the trunk (m)
+  double max_position_lag_m = 0.1;
   // a new gait starts once the ramped velocity is this close to its limits (m/s, rad/s)
   double gait_switch_velocity_margin = 0.05;
   // |v| |yaw rate| above this (m/s^2) is clamped by lowering the yaw rate: friction 0.4 allows at
-  // most 3.9 m/s^2 with no margin for the gait's own forces
-  double max_centripetal_accel_m_s2 = 2.5;
+  // most 3.9 m/s^2 with no margin for the gait's own forces; 2.5 still fell in the soak
+  double max_centripetal_accel_m_s2 = 2.0;
   double vertical_leg_half_width_m = 0.136;  // value bit1 = 1: feet under the hips
   double pigeon_toe_half_width_m = 0.11;     // value bit1 = 0: energy-saving narrower stance
   Eigen::Vector3d com_offset_body{0.013, 0.0, 0.0};
@@ -105,6 +109,7 @@ class LocomotionController {
   bool gait_change_pending_ = false;
   Eigen::Vector3d velocity_{0, 0, 0};  // ramped command
   double yaw_des_ = 0.0;
+  Eigen::Vector2d position_des_{0, 0};  // world x, y
   double height_correction_m_ = 0.0;
   int tick_in_segment_ = 0;
   std::array<bool, kNumLegs> was_stance_{};
