@@ -4,6 +4,8 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <cmath>
+#include <random>
 
 #include "control/qp/alglib_qp_solver.hpp"
 #include "control/qp/goldfarb_idnani_solver.hpp"
@@ -151,6 +153,50 @@ TEST(ConvexMpc, GoldfarbIdnaniAgreesWithAlglibOnTheRealProblem) {
   }
 }
 
+TEST(ConvexMpc, QpCostMatchesAStepByStepRolloutWithLeverArmsFollowingTheCom) {
+  // a body walking at 0.5 m/s: each step's lever arms are the feet seen from where the COM is then
+  auto mpc = make_mpc();
+  MpcInput in = standing_input(0.5);
+  in.x0[9] = 0.5;
+  in.x0[2] = 0.4;
+  for (int k = 0; k < kMpcHorizon; ++k) in.com_shift[k] = Eigen::Vector3d(0.5 * 0.03 * k, 0.01 * k, 0.0);
+  mpc->build(in);
+  const qp::QpProblem& p = mpc->problem();
+  const Eigen::MatrixXd h = p.hessian.selfadjointView<Eigen::Lower>();
+  auto qp_cost = [&](const Eigen::VectorXd& u) { return 0.5 * u.dot(h * u) + p.linear.dot(u); };
+  // independent: roll the discretised model forward one step at a time and add up the cost
+  const ConvexMpcConfig config;
+  auto rollout_cost = [&](const Eigen::VectorXd& u) {
+    StateVector x = in.x0;
+    double cost = 0.0;
+    for (int k = 0; k < kMpcHorizon; ++k) {
+      std::array<Eigen::Vector3d, kNumLegs> lever = in.foot_from_com;
+      for (auto& r : lever) r -= in.com_shift[k];
+      Eigen::Matrix<double, kSrbStates, kSrbStates> a, ad;
+      Eigen::Matrix<double, kSrbStates, 12> b, bd;
+      ConvexMpc::continuous_dynamics(config, in.x0[2], lever, a, b);
+      ConvexMpc::discretize(a, b, config.dt_s, ad, bd);
+      x = ad * x + bd * u.segment<12>(12 * k);
+      for (int s = 0; s < 12; ++s) cost += config.state_weights[s] * std::pow(x[s] - in.x_ref[k][s], 2);
+      cost += config.force_weight * u.segment<12>(12 * k).squaredNorm();
+    }
+    return cost;
+  };
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> force(-10.0, 30.0);
+  Eigen::VectorXd u1(h.rows()), u2(h.rows());
+  for (int i = 0; i < h.rows(); ++i) {
+    u1[i] = force(rng);
+    u2[i] = force(rng);
+  }
+  // the QP drops the constant term: differences of cost must agree
+  const double expected = rollout_cost(u1) - rollout_cost(u2);
+  EXPECT_NEAR(qp_cost(u1) - qp_cost(u2), expected, 1e-6 * std::abs(expected));
+  // and the shift matters: without it the rollout is a different one
+  for (auto& shift : in.com_shift) shift.setZero();
+  EXPECT_GT(std::abs(rollout_cost(u1) - rollout_cost(u2) - expected), 1e-3 * std::abs(expected));
+}
+
 TEST(ConvexMpc, NonFiniteInputIsRefusedWithoutSolving) {
   auto mpc = make_mpc();
   MpcInput in = standing_input();
@@ -158,6 +204,9 @@ TEST(ConvexMpc, NonFiniteInputIsRefusedWithoutSolving) {
   EXPECT_EQ(mpc->solve(in).status, qp::QpStatus::InvalidInput);
   in = standing_input();
   in.foot_from_com[2].x() = INFINITY;
+  EXPECT_EQ(mpc->solve(in).status, qp::QpStatus::InvalidInput);
+  in = standing_input();
+  in.com_shift[4].y() = std::nan("");
   EXPECT_EQ(mpc->solve(in).status, qp::QpStatus::InvalidInput);
 }
 

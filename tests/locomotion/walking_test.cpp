@@ -83,6 +83,30 @@ TEST(Walking, SwitchesGaitsWhileMovingWithoutFalling) {
   EXPECT_LT(std::abs(sim.backend.ground_truth().velocity_world[0]), 0.1);
 }
 
+TEST(Walking, ASlowGaitTakesOverOnlyOnceTheBodyIsWithinItsLimits) {
+  // medium trot at 1.2 m/s, then the slow trot (0.6 m/s at most): its long stance cannot carry
+  // 1.2 m/s, so the medium trot slows the body down first
+  WalkingSim sim;
+  sim.controller.set(walk_command(3, 1.2));
+  bool upright = true;
+  auto check = [&](const CycleRecord&) { upright &= sim.upright(); };
+  sim.run_until(kStart);
+  sim.run_until(kStart + 3.0, check);
+  sim.controller.set(walk_command(27, 0.6));
+  bool switched_too_fast = false;
+  bool switched = false;
+  sim.run_until(kStart + 6.0, [&](const CycleRecord& record) {
+    check(record);
+    if (sim.controller.walker().scheduler().pattern().id != 27) return;
+    switched = true;
+    switched_too_fast |= sim.controller.walker().ramped_velocity().x() > 0.6 + 0.05 + 1e-9;
+  });
+  EXPECT_TRUE(switched);
+  EXPECT_FALSE(switched_too_fast);
+  EXPECT_TRUE(upright);
+  EXPECT_NEAR(sim.backend.ground_truth().velocity_world[0], 0.6, 0.15);
+}
+
 TEST(Walking, VelocityBeyondTheGaitsLimitIsClampedAndNanIsRefused) {
   WalkingSim sim;
   sim.controller.set(walk_command(27, 0.3));
