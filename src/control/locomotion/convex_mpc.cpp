@@ -1,6 +1,7 @@
 #include "control/locomotion/convex_mpc.hpp"
 
 #include <Eigen/Dense>
+#include <Eigen/Geometry>
 #include <cmath>
 #include <limits>
 #include <unsupported/Eigen/MatrixFunctions>
@@ -45,14 +46,18 @@ void ConvexMpc::continuous_dynamics(const ConvexMpcConfig& config, double yaw,
                                     const std::array<Eigen::Vector3d, kNumLegs>& foot_from_com,
                                     Eigen::Matrix<double, kSrbStates, kSrbStates>& a,
                                     Eigen::Matrix<double, kSrbStates, kInputs>& b) {
-  const double c = std::cos(yaw);
-  const double s = std::sin(yaw);
-  Eigen::Matrix3d rz;
-  rz << c, -s, 0, s, c, 0, 0, 0, 1;
+  const Eigen::Matrix3d rz = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   a.setZero();
   a.block<3, 3>(0, 6) = rz.transpose();  // rpy rates from world angular velocity (small roll/pitch)
   a.block<3, 3>(3, 9).setIdentity();      // position from velocity
   a(11, 12) = 1.0;                        // gravity state drives vz
+  input_matrix(config, yaw, foot_from_com, b);
+}
+
+void ConvexMpc::input_matrix(const ConvexMpcConfig& config, double yaw,
+                             const std::array<Eigen::Vector3d, kNumLegs>& foot_from_com,
+                             Eigen::Matrix<double, kSrbStates, kInputs>& b) {
+  const Eigen::Matrix3d rz = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   const Eigen::Matrix3d inertia_world = rz * config.inertia_diag.asDiagonal() * rz.transpose();
   const Eigen::Matrix3d inertia_inv = inertia_world.inverse();
   b.setZero();
@@ -62,42 +67,39 @@ void ConvexMpc::continuous_dynamics(const ConvexMpcConfig& config, double yaw,
   }
 }
 
+void ConvexMpc::zero_order_hold(const Eigen::Matrix<double, kSrbStates, kSrbStates>& a, double dt,
+                                Eigen::Matrix<double, kSrbStates, kSrbStates>& ad,
+                                Eigen::Matrix<double, kSrbStates, kSrbStates>& hold) {
+  // exp([[A, I], [0, 0]] dt) = [[exp(A dt), integral of exp(A s) over [0, dt]], [0, I]]
+  Eigen::Matrix<double, 2 * kSrbStates, 2 * kSrbStates> augmented;
+  augmented.setZero();
+  augmented.topLeftCorner<kSrbStates, kSrbStates>() = a * dt;
+  augmented.topRightCorner<kSrbStates, kSrbStates>().diagonal().setConstant(dt);
+  const Eigen::Matrix<double, 2 * kSrbStates, 2 * kSrbStates> exponential = augmented.exp();
+  ad = exponential.topLeftCorner<kSrbStates, kSrbStates>();
+  hold = exponential.topRightCorner<kSrbStates, kSrbStates>();
+}
+
 void ConvexMpc::discretize(const Eigen::Matrix<double, kSrbStates, kSrbStates>& a,
                            const Eigen::Matrix<double, kSrbStates, kInputs>& b, double dt,
                            Eigen::Matrix<double, kSrbStates, kSrbStates>& ad,
                            Eigen::Matrix<double, kSrbStates, kInputs>& bd) {
-  Eigen::Matrix<double, kSrbStates + kInputs, kSrbStates + kInputs> augmented;
-  augmented.setZero();
-  augmented.topLeftCorner<kSrbStates, kSrbStates>() = a * dt;
-  augmented.topRightCorner<kSrbStates, kInputs>() = b * dt;
-  const Eigen::Matrix<double, kSrbStates + kInputs, kSrbStates + kInputs> exponential = augmented.exp();
-  ad = exponential.topLeftCorner<kSrbStates, kSrbStates>();
-  bd = exponential.topRightCorner<kSrbStates, kInputs>();
-}
-
-Eigen::Matrix<double, kSrbStates, kSrbStates> ConvexMpc::hold_integral(
-    const Eigen::Matrix<double, kSrbStates, kSrbStates>& a, double dt) {
-  // exp([[A, I], [0, 0]] dt) holds the integral in its top right block
-  Eigen::Matrix<double, 2 * kSrbStates, 2 * kSrbStates> augmented;
-  augmented.setZero();
-  augmented.topLeftCorner<kSrbStates, kSrbStates>() = a * dt;
-  augmented.topRightCorner<kSrbStates, kSrbStates>() = Eigen::Matrix<double, kSrbStates, kSrbStates>::Identity() * dt;
-  const Eigen::Matrix<double, 2 * kSrbStates, 2 * kSrbStates> exponential = augmented.exp();
-  return exponential.topRightCorner<kSrbStates, kSrbStates>();
+  Eigen::Matrix<double, kSrbStates, kSrbStates> hold;
+  zero_order_hold(a, dt, ad, hold);
+  bd = hold * b;
 }
 
 void ConvexMpc::build(const MpcInput& input) {
   // discrete dynamics at the current yaw; the feet's lever arms follow the COM along the horizon
-  Eigen::Matrix<double, kSrbStates, kSrbStates> a;
+  Eigen::Matrix<double, kSrbStates, kSrbStates> a, ad, hold;
   Eigen::Matrix<double, kSrbStates, kInputs> b;
   continuous_dynamics(config_, input.x0[2], input.foot_from_com, a, b);
-  const Eigen::Matrix<double, kSrbStates, kSrbStates> ad = (a * config_.dt_s).exp();
-  const Eigen::Matrix<double, kSrbStates, kSrbStates> hold = hold_integral(a, config_.dt_s);
+  zero_order_hold(a, config_.dt_s, ad, hold);
   std::array<Eigen::Matrix<double, kSrbStates, kInputs>, kMpcHorizon> bd;
   std::array<Eigen::Vector3d, kNumLegs> lever;
   for (int k = 0; k < kMpcHorizon; ++k) {
     for (std::size_t leg = 0; leg < kNumLegs; ++leg) lever[leg] = input.foot_from_com[leg] - input.com_shift[k];
-    continuous_dynamics(config_, input.x0[2], lever, a, b);
+    input_matrix(config_, input.x0[2], lever, b);
     bd[k] = hold * b;
   }
 

@@ -71,10 +71,16 @@ class ConvexMpc {
                                   const std::array<Eigen::Vector3d, kNumLegs>& foot_from_com,
                                   Eigen::Matrix<double, kSrbStates, kSrbStates>& a,
                                   Eigen::Matrix<double, kSrbStates, 3 * kNumLegs>& b);
-  // the input matrix's zero-order-hold factor: Bd = G B with G = integral of exp(A s) over [0, dt]
-  static Eigen::Matrix<double, kSrbStates, kSrbStates> hold_integral(
-      const Eigen::Matrix<double, kSrbStates, kSrbStates>& a, double dt);
-  // exact zero-order-hold discretisation through the matrix exponential of [[A, B], [0, 0]] dt
+  // the input matrix alone (B of continuous_dynamics): the feet's lever arms change along the horizon
+  static void input_matrix(const ConvexMpcConfig& config, double yaw,
+                           const std::array<Eigen::Vector3d, kNumLegs>& foot_from_com,
+                           Eigen::Matrix<double, kSrbStates, 3 * kNumLegs>& b);
+  // Ad = exp(A dt) and the hold factor G = integral of exp(A s) over [0, dt] (Bd = G B), from one
+  // matrix exponential
+  static void zero_order_hold(const Eigen::Matrix<double, kSrbStates, kSrbStates>& a, double dt,
+                              Eigen::Matrix<double, kSrbStates, kSrbStates>& ad,
+                              Eigen::Matrix<double, kSrbStates, kSrbStates>& hold);
+  // exact zero-order-hold discretisation: Ad, Bd = G B
   static void discretize(const Eigen::Matrix<double, kSrbStates, kSrbStates>& a,
                          const Eigen::Matrix<double, kSrbStates, 3 * kNumLegs>& b, double dt,
                          Eigen::Matrix<double, kSrbStates, kSrbStates>& ad,

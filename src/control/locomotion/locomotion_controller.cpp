@@ -141,11 +141,12 @@ void LocomotionController::post_mpc(const RobotState& state) {
   const double pitch_ref = target_.pitch_rad + ground_.pitch_along(yaw);
   const double roll_ref = ground_.roll_along(yaw);
   // the reference turns with the commanded yaw rate: velocity and position follow the arc
-  Eigen::Vector3d position(position_des_.x(), position_des_.y(), state.position_world.z());
+  const Eigen::Vector3d start(position_des_.x(), position_des_.y(), state.position_world.z());
+  Eigen::Vector3d position = start;
   for (int k = 0; k < kMpcHorizon; ++k) {
     const double yaw_k = yaw + yaw_offset + velocity_.z() * (k + 1) * dt;
     const Eigen::Vector3d velocity_world = yaw_rotation(yaw_k) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
-    in.com_shift[k] = position - Eigen::Vector3d(position_des_.x(), position_des_.y(), state.position_world.z());
+    in.com_shift[k] = position - start;
     position += velocity_world * dt;
     auto& x = in.x_ref[k];
     const double ground_z = ground_.plane().height_at(position.x(), position.y());
