@@ -59,6 +59,12 @@ void RecoveryStandMode::run(const RobotState& state, JointCommand& command) {
     if (righting_.done()) phase_ = Phase::Assess;
     return;
   }
+  // knocked over while rising (or still falling when the mode began): roll again
+  if (body_rest(state.orientation) != BodyRest::Upright) {
+    phase_ = Phase::Assess;
+    run(state, command);
+    return;
+  }
   stand_up_.compute(state, command);
 }
 

@@ -1,6 +1,8 @@
 // Mode 12: stand up from wherever the robot is. Upright (lying on its belly or standing): fold
 // the legs to the lying pose, then rise. On its back or side: first roll over onto the belly
 // (SelfRighting), check the orientation again, and repeat (over the other flank) until upright.
+// A body that tips onto its back or side while rising (entered while still falling, or pushed
+// over) is rolled again.
 // Gait 17 / 18 roll over the left / right flank ("lie on the left / right side first"); gait 0
 // rolls over the flank the body leans towards.
 #pragma once

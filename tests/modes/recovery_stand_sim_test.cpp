@@ -64,6 +64,20 @@ TEST(RecoveryStandSim, RightsItselfFromItsBackOverEitherFlank) {
   }
 }
 
+TEST(RecoveryStandSim, RollsAgainWhenKnockedOntoItsSideWhileRising) {
+  ModeSim sim(ModeId::Off);
+  sim.run(1.0);
+  sim.send(command(ModeId::RecoveryStand, 0), 0.5);
+  ASSERT_EQ(sim.recovery_stand.roll_attempts(), 0);
+  // a hard sideways shove while the legs unfold: the body goes over onto its side
+  sim.backend.set_external_force({0.0, 150.0, 0.0});
+  sim.run_until([&] { return std::abs(sim.true_rpy().x()) > 1.2; }, 1.5);
+  sim.backend.set_external_force({0.0, 0.0, 0.0});
+  ASSERT_GT(std::abs(sim.true_rpy().x()), 1.2);
+  EXPECT_GT(sim.run_until([&] { return standing(sim); }, 15.0), 0.0);
+  EXPECT_GE(sim.recovery_stand.roll_attempts(), 1);
+}
+
 TEST(RecoveryStandSim, ProgressRunsThroughTheRollAndTheStand) {
   ModeSim sim(ModeId::Off);
   sim.backend.set_base_pose({0.0, 0.0, 0.3}, {0.0, 1.0, 0.0, 0.0});
