@@ -69,6 +69,20 @@ TEST(Gait, PhasesAdvanceThroughStanceAndSwing) {
   EXPECT_NEAR(fr.stance_phase, 0.5, 1e-9);
 }
 
+TEST(Gait, StandsDoNotStepAndTheBridgeKeepsEveryFootDown) {
+  for (int id : {2, 3, 4, 7, 10, 26, 27}) EXPECT_TRUE(steps(*gait_pattern(id))) << id;
+  for (int id : {1, 31}) EXPECT_FALSE(steps(*gait_pattern(id))) << id;
+  const GaitPattern bridge = stand_bridge_pattern(2);
+  EXPECT_FALSE(steps(bridge));
+  GaitScheduler scheduler(0.03);
+  scheduler.set_pattern(bridge);
+  for (int tick = 0; tick < 60; ++tick) {
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) EXPECT_TRUE(scheduler.leg_phase(leg).stance);
+    scheduler.advance(0.002);
+  }
+  EXPECT_EQ(stand_bridge_pattern(0).period_segments, 1);  // never an empty cycle
+}
+
 TEST(Gait, SwitchingPatternKeepsTheCyclePhase) {
   GaitScheduler scheduler(0.03);
   scheduler.set_pattern(*gait_pattern(27));

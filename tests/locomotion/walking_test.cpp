@@ -2,6 +2,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <utility>
+#include <vector>
 
 #include "walking_fixture.hpp"
 
@@ -81,6 +83,46 @@ TEST(Walking, SwitchesGaitsWhileMovingWithoutFalling) {
   sim.run_until(kStart + 12.0, check);
   EXPECT_TRUE(upright);
   EXPECT_LT(std::abs(sim.backend.ground_truth().velocity_world[0]), 0.1);
+}
+
+TEST(Walking, AllFeetStandOneSegmentBetweenTwoGaitsButNotBetweenTrotFrequencies) {
+  WalkingSim sim;
+  sim.controller.set(walk_command(7, 0.2));
+  sim.run_until(kStart + 3.0);
+  // bound -> flying trot: the patterns in the order they run, and how long each ran
+  sim.controller.set(walk_command(10, 0.5));
+  std::vector<std::pair<int, int>> runs;  // (gait id, ticks)
+  bool all_stance_in_bridge = true;
+  auto record = [&](const CycleRecord&) {
+    const GaitScheduler& scheduler = sim.controller.walker().scheduler();
+    const int id = scheduler.pattern().id;
+    if (runs.empty() || runs.back().first != id) runs.push_back({id, 0});
+    ++runs.back().second;
+    if (id != 1) return;
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) all_stance_in_bridge &= scheduler.leg_phase(leg).stance;
+  };
+  sim.run_until(kStart + 4.0, record);
+  ASSERT_EQ(runs.size(), 3u);
+  EXPECT_EQ(runs[0].first, 7);
+  EXPECT_EQ(runs[1].first, 1);
+  EXPECT_EQ(runs[1].second, 15);  // one 30 ms segment at 500 Hz
+  EXPECT_EQ(runs[2].first, 10);
+  EXPECT_TRUE(all_stance_in_bridge);
+  // the variable-frequency trot shortens its cycle as it speeds up, without a bridge
+  sim.controller.set(walk_command(26, 0.2));
+  sim.run_until(kStart + 6.0);
+  runs.clear();
+  std::vector<int> periods;
+  sim.controller.set(walk_command(26, 1.2));
+  sim.run_until(kStart + 8.0, [&](const CycleRecord& r) {
+    record(r);
+    const int period = sim.controller.walker().scheduler().pattern().period_segments;
+    if (periods.empty() || periods.back() != period) periods.push_back(period);
+  });
+  ASSERT_EQ(runs.size(), 1u);
+  EXPECT_EQ(runs[0].first, 26);
+  EXPECT_GE(periods.size(), 3u);
+  EXPECT_TRUE(sim.upright());
 }
 
 TEST(Walking, ASlowGaitTakesOverOnlyOnceTheBodyIsWithinItsLimits) {

@@ -56,6 +56,18 @@ GaitPattern variable_trot_pattern(double speed_m_s) {
   return p;
 }
 
+bool steps(const GaitPattern& pattern) {
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    if (pattern.stance[leg] < pattern.period_segments) return true;
+  }
+  return false;
+}
+
+GaitPattern stand_bridge_pattern(int segments) {
+  const int period = std::max(segments, 1);
+  return make(1, period, {0, 0, 0, 0}, period, {0, 0, 0}, {0, 0, 0});
+}
+
 GaitScheduler::GaitScheduler(double segment_s) : segment_s_(segment_s), pattern_(*gait_pattern(1)) {}
 
 double GaitScheduler::cycle_phase() const {

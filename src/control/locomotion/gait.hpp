@@ -29,6 +29,12 @@ bool legs_swing_together(const GaitPattern& pattern);
 // the variable-frequency trot's pattern for a commanded speed (m/s)
 GaitPattern variable_trot_pattern(double speed_m_s);
 
+// true for a pattern in which some leg swings (false for a stand)
+bool steps(const GaitPattern& pattern);
+
+// all feet on the ground for a few segments: the bridge from one stepping gait to another
+GaitPattern stand_bridge_pattern(int segments);
+
 // where each leg is in the cycle at one instant
 struct LegPhase {
   bool stance = true;

@@ -49,6 +49,7 @@ void LocomotionController::reset(const RobotState& state) {
   scheduler_ = GaitScheduler(config_.tick_s * config_.ticks_per_segment);
   scheduler_.set_pattern(target_.gait);
   gait_change_pending_ = false;
+  bridging_ = false;
   velocity_.setZero();
   yaw_des_ = state.rpy.z();
   position_des_ = state.position_world.head<2>();
@@ -256,9 +257,21 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
     within_limits &= velocity_[axis] >= pending_gait_.velocity_min[axis] - config_.gait_switch_velocity_margin &&
                      velocity_[axis] <= pending_gait_.velocity_max[axis] + config_.gait_switch_velocity_margin;
   }
-  const bool to_stand = pending_gait_.stance[0] == pending_gait_.period_segments;
+  const bool to_stand = !steps(pending_gait_);
   const bool moving = state.velocity_world.head<2>().norm() > 0.15;
-  if (gait_change_pending_ && within_limits && !(to_stand && moving)) {
+  const bool ready = gait_change_pending_ && within_limits && !(to_stand && moving);
+  if (bridging_) {
+    // the bridge ends with its cycle: into the new gait, or back to the old one when a newer
+    // command is not ready for its gait yet
+    next = ready ? pending_gait_ : gait_before_bridge_;
+    gait_change_pending_ = gait_change_pending_ && !ready;
+    bridging_ = false;
+  } else if (ready && config_.gait_bridge_segments > 0 && steps(next) && steps(pending_gait_) &&
+             next.id != pending_gait_.id) {
+    gait_before_bridge_ = next;
+    next = stand_bridge_pattern(config_.gait_bridge_segments);
+    bridging_ = true;
+  } else if (ready) {
     next = pending_gait_;
     gait_change_pending_ = false;
   }

@@ -28,16 +28,23 @@ struct LocomotionConfig {
   double swing_kd = 1.0;
   // joint damping toward a foot at rest on the ground; its forces are outside the MPC's friction
   // cone, and at 0.8 they made loaded feet slip in turns
-  double stance_kd = 0.3;
+  double stance_kd = 0.15;
   // slow integral on the height error: joint friction otherwise leaves a steady offset
   double height_integral_gain = 2.0;  // 1/s
   double height_integral_limit_m = 0.03;
-  double max_accel_m_s2 = 2.0;        // ramp of the commanded velocity
-  double max_yaw_accel_rad_s2 = 6.0;
+  // ramp of the commanded velocity; at 2.0 m/s^2 and 6 rad/s^2 changes of command (a turn
+  // reversed at speed) fell in the soak twice as often
+  double max_accel_m_s2 = 1.2;
+  double max_yaw_accel_rad_s2 = 3.0;
   // the position reference runs at most this far from the trunk (m)
   double max_position_lag_m = 0.1;
   // a new gait starts once the ramped velocity is this close to its limits (m/s, rad/s)
   double gait_switch_velocity_margin = 0.05;
+  // between two stepping gaits all feet stand this many segments (0: none): the old gait's last
+  // stance leaves the body pitching or rolling (a bound up to 4 rad/s), and the new gait's first
+  // swing pair would otherwise lift the legs that have to stop it; longer bridges fell more, the
+  // feet stand while the body moves on
+  int gait_bridge_segments = 1;
   // |v| |yaw rate| above this (m/s^2) is clamped by lowering the yaw rate: friction 0.4 allows at
   // most 3.9 m/s^2 with no margin for the gait's own forces; 2.5 still fell in the soak
   double max_centripetal_accel_m_s2 = 2.0;
@@ -107,6 +114,8 @@ class LocomotionController {
   LocomotionTarget target_;
   GaitPattern pending_gait_;
   bool gait_change_pending_ = false;
+  bool bridging_ = false;  // the scheduler runs the stand bridge between two gaits
+  GaitPattern gait_before_bridge_;
   Eigen::Vector3d velocity_{0, 0, 0};  // ramped command
   double yaw_des_ = 0.0;
   Eigen::Vector2d position_des_{0, 0};  // world x, y
