@@ -27,8 +27,8 @@ struct LocomotionConfig {
   double swing_kp = 40.0;  // joint gains tracking the swing trajectory (motor PD at 1 kHz)
   double swing_kd = 1.0;
   // joint damping toward a foot at rest on the ground; its forces are outside the MPC's friction
-  // cone, and at 0.8 they made loaded feet slip in turns
-  double stance_kd = 0.15;
+  // cone, and at 0.8 they made loaded feet slip in turns; at 0.2 a 15 N s push fell
+  double stance_kd = 0.25;
   // slow integral on the height error: joint friction otherwise leaves a steady offset
   double height_integral_gain = 2.0;  // 1/s
   double height_integral_limit_m = 0.03;
