@@ -68,11 +68,12 @@ void HighLevelMachine::watch_body(const RobotState& state) {
   }
   if (!watches_body(id)) return;
   Mode* damper = mode_for(static_cast<int>(ModeId::PureDamper));
+  const bool tipped = orientation_error(state);
   const int foot_bits = watches_feet(id) ? foot_position_error_bits(state) : 0;
-  if ((orientation_error(state) || foot_bits != 0) && damper != nullptr) {
+  if ((tipped || foot_bits != 0) && damper != nullptr) {
     // tipped over or a foot out of reach: damp the joints, drop the client's sequence, wait for
     // a recovery stand
-    orientation_error_ = orientation_error(state);
+    orientation_error_ = tipped;
     foot_position_error_ = foot_bits;
     queue_.clear();
     applied_generation_ = queue_.generation();

@@ -42,6 +42,8 @@ BodyRest RecoveryStandMode::roll_flank(BodyRest rest, const RobotState& state) c
 }
 
 void RecoveryStandMode::run(const RobotState& state, JointCommand& command) {
+  // knocked over while rising (or still falling when the mode began): roll again
+  if (phase_ == Phase::StandingUp && body_rest(state.orientation) != BodyRest::Upright) phase_ = Phase::Assess;
   if (phase_ == Phase::Assess) {
     const BodyRest rest = body_rest(state.orientation);
     if (rest == BodyRest::Upright) {
@@ -57,12 +59,6 @@ void RecoveryStandMode::run(const RobotState& state, JointCommand& command) {
     righting_.compute(state, command);
     // the last keyframe holds still: once it is done, look again
     if (righting_.done()) phase_ = Phase::Assess;
-    return;
-  }
-  // knocked over while rising (or still falling when the mode began): roll again
-  if (body_rest(state.orientation) != BodyRest::Upright) {
-    phase_ = Phase::Assess;
-    run(state, command);
     return;
   }
   stand_up_.compute(state, command);

@@ -46,12 +46,16 @@ void ConvexMpc::continuous_dynamics(const ConvexMpcConfig& config, double yaw,
                                     const std::array<Eigen::Vector3d, kNumLegs>& foot_from_com,
                                     Eigen::Matrix<double, kSrbStates, kSrbStates>& a,
                                     Eigen::Matrix<double, kSrbStates, kInputs>& b) {
+  state_matrix(yaw, a);
+  input_matrix(config, yaw, foot_from_com, b);
+}
+
+void ConvexMpc::state_matrix(double yaw, Eigen::Matrix<double, kSrbStates, kSrbStates>& a) {
   const Eigen::Matrix3d rz = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   a.setZero();
   a.block<3, 3>(0, 6) = rz.transpose();  // rpy rates from world angular velocity (small roll/pitch)
   a.block<3, 3>(3, 9).setIdentity();      // position from velocity
   a(11, 12) = 1.0;                        // gravity state drives vz
-  input_matrix(config, yaw, foot_from_com, b);
 }
 
 void ConvexMpc::input_matrix(const ConvexMpcConfig& config, double yaw,
@@ -93,7 +97,7 @@ void ConvexMpc::build(const MpcInput& input) {
   // discrete dynamics at the current yaw; the feet's lever arms follow the COM along the horizon
   Eigen::Matrix<double, kSrbStates, kSrbStates> a, ad, hold;
   Eigen::Matrix<double, kSrbStates, kInputs> b;
-  continuous_dynamics(config_, input.x0[2], input.foot_from_com, a, b);
+  state_matrix(input.x0[2], a);
   zero_order_hold(a, config_.dt_s, ad, hold);
   std::array<Eigen::Matrix<double, kSrbStates, kInputs>, kMpcHorizon> bd;
   std::array<Eigen::Vector3d, kNumLegs> lever;

@@ -71,7 +71,9 @@ class ConvexMpc {
                                   const std::array<Eigen::Vector3d, kNumLegs>& foot_from_com,
                                   Eigen::Matrix<double, kSrbStates, kSrbStates>& a,
                                   Eigen::Matrix<double, kSrbStates, 3 * kNumLegs>& b);
-  // the input matrix alone (B of continuous_dynamics): the feet's lever arms change along the horizon
+  // its two halves: A depends on the yaw alone; B also on the feet's lever arms, which change
+  // along the horizon
+  static void state_matrix(double yaw, Eigen::Matrix<double, kSrbStates, kSrbStates>& a);
   static void input_matrix(const ConvexMpcConfig& config, double yaw,
                            const std::array<Eigen::Vector3d, kNumLegs>& foot_from_com,
                            Eigen::Matrix<double, kSrbStates, 3 * kNumLegs>& b);

@@ -264,7 +264,7 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
     // the bridge ends with its cycle: into the new gait, or back to the old one when a newer
     // command is not ready for its gait yet
     next = ready ? pending_gait_ : gait_before_bridge_;
-    gait_change_pending_ = gait_change_pending_ && !ready;
+    if (ready) gait_change_pending_ = false;
     bridging_ = false;
   } else if (ready && config_.gait_bridge_segments > 0 && steps(next) && steps(pending_gait_) &&
              next.id != pending_gait_.id) {
@@ -313,12 +313,16 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
     post_mpc(state);
   }
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
+  std::array<LegPhase, kNumLegs> phases;
   bool flight = true;
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) flight &= !scheduler_.leg_phase(leg).stance;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    phases[leg] = scheduler_.leg_phase(leg);
+    flight &= !phases[leg].stance;
+  }
   if (!flight) swing_frame_ = body_to_world;
   in_flight_ = flight;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    const LegPhase phase = scheduler_.leg_phase(leg);
+    const LegPhase& phase = phases[leg];
     if (phase.stance) {
       command_stance_leg(leg, state, command);
     } else {
