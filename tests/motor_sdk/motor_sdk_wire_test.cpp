@@ -60,7 +60,7 @@ TEST(MotorSdkWire, MotorCtrlRoundTripsWithHipAndKneeNegatedOnTheWire) {
   const std::vector<std::uint8_t> bytes = encoded(message);
   ASSERT_EQ(bytes.size(), 248u);
   JointCommand decoded;
-  ASSERT_EQ(decode_motor_ctrl(bytes.data(), bytes.size(), decoded), MotorCtrlDecode::Ok);
+  ASSERT_EQ(decode_motor_ctrl(bytes.data(), bytes.size(), decoded), WireDecode::Ok);
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     EXPECT_NEAR(decoded.q_des[i], sdk.q_des[i], 1e-6);
     EXPECT_NEAR(decoded.qd_des[i], sdk.qd_des[i], 1e-6);
@@ -73,15 +73,15 @@ TEST(MotorSdkWire, MotorCtrlRoundTripsWithHipAndKneeNegatedOnTheWire) {
 TEST(MotorSdkWire, MalformedPacketsAreClassified) {
   std::vector<std::uint8_t> bytes = encoded(encode_motor_ctrl(distinct_command()));
   JointCommand out;
-  EXPECT_EQ(decode_motor_ctrl(bytes.data(), 100, out), MotorCtrlDecode::Truncated);
-  EXPECT_EQ(decode_motor_ctrl(bytes.data(), 7, out), MotorCtrlDecode::Truncated);
-  EXPECT_EQ(decode_motor_ctrl(bytes.data(), 247, out), MotorCtrlDecode::Truncated);
+  EXPECT_EQ(decode_motor_ctrl(bytes.data(), 100, out), WireDecode::Truncated);
+  EXPECT_EQ(decode_motor_ctrl(bytes.data(), 7, out), WireDecode::Truncated);
+  EXPECT_EQ(decode_motor_ctrl(bytes.data(), 247, out), WireDecode::Truncated);
   std::vector<std::uint8_t> longer = bytes;
   longer.resize(300, 0);
-  EXPECT_EQ(decode_motor_ctrl(longer.data(), longer.size(), out), MotorCtrlDecode::Oversized);
+  EXPECT_EQ(decode_motor_ctrl(longer.data(), longer.size(), out), WireDecode::Oversized);
   std::vector<std::uint8_t> other = bytes;
   other[3] ^= 0x40;
-  EXPECT_EQ(decode_motor_ctrl(other.data(), other.size(), out), MotorCtrlDecode::WrongFingerprint);
+  EXPECT_EQ(decode_motor_ctrl(other.data(), other.size(), out), WireDecode::WrongFingerprint);
   // the fingerprint of the vendor's type, as published
   EXPECT_EQ(static_cast<std::uint64_t>(motor_ctrl_lcmt::getHash()), 0x7bb7cc457845acacull);
 }

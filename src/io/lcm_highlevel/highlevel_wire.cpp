@@ -9,17 +9,12 @@
 namespace cerebellum {
 namespace {
 
-constexpr std::size_t kFingerprintBytes = 8;
 constexpr std::size_t kStringLengthBytes = 4;
 
 std::uint64_t read_big_endian(const std::uint8_t* bytes, std::size_t count) {
   std::uint64_t value = 0;
   for (std::size_t i = 0; i < count; ++i) value = (value << 8) | bytes[i];
   return value;
-}
-
-bool fingerprint_is(const void* data, std::int64_t hash) {
-  return read_big_endian(static_cast<const std::uint8_t*>(data), kFingerprintBytes) == static_cast<std::uint64_t>(hash);
 }
 
 template <std::size_t N>
@@ -34,24 +29,9 @@ void copy_floats(const std::array<float, N>& from, float (&to)[N]) {
 
 }  // namespace
 
-const char* to_string(WireDecode result) {
-  switch (result) {
-    case WireDecode::Ok: return "ok";
-    case WireDecode::WrongFingerprint: return "wrong fingerprint";
-    case WireDecode::Truncated: return "truncated";
-    case WireDecode::Oversized: return "oversized";
-  }
-  return "?";
-}
-
 WireDecode decode_robot_control_cmd(const void* data, std::size_t size, HighLevelCommand& command) {
-  static const int kEncodedSize = robot_control_cmd_lcmt{}.getEncodedSize();
-  if (size < kFingerprintBytes) return WireDecode::Truncated;
-  if (!fingerprint_is(data, robot_control_cmd_lcmt::getHash())) return WireDecode::WrongFingerprint;
-  if (size < static_cast<std::size_t>(kEncodedSize)) return WireDecode::Truncated;
-  if (size > static_cast<std::size_t>(kEncodedSize)) return WireDecode::Oversized;
   robot_control_cmd_lcmt message{};
-  if (message.decode(data, 0, kEncodedSize) != kEncodedSize) return WireDecode::Truncated;
+  if (const WireDecode checked = decode_fixed_size(data, size, message); checked != WireDecode::Ok) return checked;
   command.mode = message.mode;
   command.gait_id = message.gait_id;
   command.contact = message.contact;
@@ -87,17 +67,17 @@ robot_control_cmd_lcmt encode_robot_control_cmd(const HighLevelCommand& command)
 }
 
 WireDecode decode_file_send(const void* data, std::size_t size, std::string& text) {
-  if (size < kFingerprintBytes) return WireDecode::Truncated;
-  if (!fingerprint_is(data, file_send_lcmt::getHash())) return WireDecode::WrongFingerprint;
-  if (size < kFingerprintBytes + kStringLengthBytes) return WireDecode::Truncated;
+  if (size < kLcmFingerprintBytes) return WireDecode::Truncated;
+  if (!has_fingerprint(data, size, file_send_lcmt::getHash())) return WireDecode::WrongFingerprint;
+  if (size < kLcmFingerprintBytes + kStringLengthBytes) return WireDecode::Truncated;
   // the int32 length counts the terminating nul
   const auto* bytes = static_cast<const std::uint8_t*>(data);
-  const std::uint64_t length = read_big_endian(bytes + kFingerprintBytes, kStringLengthBytes);
+  const std::uint64_t length = read_big_endian(bytes + kLcmFingerprintBytes, kStringLengthBytes);
   if (length > kMaxUserGaitFileBytes + 1) return WireDecode::Oversized;
-  const std::size_t expected = kFingerprintBytes + kStringLengthBytes + length;
+  const std::size_t expected = kLcmFingerprintBytes + kStringLengthBytes + length;
   if (length == 0 || size < expected) return WireDecode::Truncated;
   if (size > expected) return WireDecode::Oversized;
-  const char* characters = reinterpret_cast<const char*>(bytes + kFingerprintBytes + kStringLengthBytes);
+  const char* characters = reinterpret_cast<const char*>(bytes + kLcmFingerprintBytes + kStringLengthBytes);
   if (characters[length - 1] != '\0') return WireDecode::Truncated;
   text.assign(characters, length - 1);
   return WireDecode::Ok;

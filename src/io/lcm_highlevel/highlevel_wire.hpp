@@ -8,6 +8,7 @@
 
 #include "core/robot_state.hpp"
 #include "danger_states_lcmt.hpp"
+#include "io/lcm_common/lcm_packet.hpp"
 #include "file_recv_lcmt.hpp"
 #include "localization_lcmt.hpp"
 #include "modes/high_level_command.hpp"
@@ -15,14 +16,6 @@
 #include "robot_control_response_lcmt.hpp"
 
 namespace cerebellum {
-
-enum class WireDecode {
-  Ok,
-  WrongFingerprint,  // the first 8 bytes are not the type's hash
-  Truncated,         // shorter than the message (or than its declared string length)
-  Oversized,         // longer than the message (or a string above the size limit)
-};
-const char* to_string(WireDecode result);
 
 // one raw robot_control_cmd packet (exactly 124 bytes)
 WireDecode decode_robot_control_cmd(const void* data, std::size_t size, HighLevelCommand& command);

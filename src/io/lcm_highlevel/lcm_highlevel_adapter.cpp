@@ -2,9 +2,8 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include <chrono>
-#include <stdexcept>
-
+#include "io/common/wall_clock.hpp"
+#include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_highlevel/highlevel_wire.hpp"
 #include "io/lcm_highlevel/user_gait_file.hpp"
 
@@ -17,27 +16,9 @@ constexpr const char* kGaitResultChannel = "user_gait_result";
 constexpr const char* kResponseChannel = "robot_control_response";
 constexpr const char* kTemperatureChannel = "motor_temperature";
 constexpr const char* kOdometryChannel = "global_to_robot";
+constexpr const char* kInterfaceName = "highlevel";
 constexpr int kRefusalLinesPerSecond = 5;
-
-std::unique_ptr<lcm::LCM> open_lcm(const std::string& url) {
-  auto lcm = std::make_unique<lcm::LCM>(url);
-  if (!lcm->good()) {
-    throw std::runtime_error("highlevel: cannot open LCM url " + url +
-                             " (is there a multicast route? see docs/highlevel.md)");
-  }
-  return lcm;
-}
-
-double wall_seconds() {
-  using Clock = std::chrono::steady_clock;
-  return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
-}
-
-// appends "<count> <what>" when count is not zero
-void describe(std::string& text, std::uint64_t count, const char* what) {
-  if (count == 0) return;
-  text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + what;
-}
+constexpr int kGaitFileLinesPerSecond = 5;
 
 std::string describe_gait_file(const UserGaitFile& file) {
   if (file.kind == UserGaitFile::Kind::Definition) {
@@ -59,22 +40,22 @@ std::string describe_gait_file(const UserGaitFile& file) {
 LcmHighLevelAdapter::LcmHighLevelAdapter(HighLevelMachine& machine, const HighLevelLcmConfig& config,
                                          double loop_period_s, std::FILE* log)
     : machine_(machine), log_(log), keepalive_s_(config.response_keepalive_s),
-      command_lcm_(open_lcm(config.command_url)), response_lcm_(open_lcm(config.response_url)),
-      odometry_lcm_(open_lcm(config.odometry_url)), schedule_(loop_period_s) {
+      command_lcm_(open_lcm_url(config.command_url, kInterfaceName)),
+      response_lcm_(open_lcm_url(config.response_url, kInterfaceName)),
+      odometry_lcm_(open_lcm_url(config.odometry_url, kInterfaceName)), schedule_(loop_period_s),
+      refusal_log_(log, kInterfaceName, "refusals (BAN_TRANS)", kRefusalLinesPerSecond),
+      gait_file_log_(log, kInterfaceName, "user_gait_file results", kGaitFileLinesPerSecond),
+      count_log_period_(wall_seconds()) {
   command_lcm_->subscribe(kCommandChannel, &LcmHighLevelAdapter::on_command, this);
   command_lcm_->subscribe(kGaitFileChannel, &LcmHighLevelAdapter::on_gait_file, this);
   std::fprintf(log_, "highlevel: robot_control_cmd and user_gait_file on %s; robot_control_response and "
                "motor_temperature on %s; global_to_robot on %s\n",
                config.command_url.c_str(), config.response_url.c_str(), config.odometry_url.c_str());
   std::fflush(log_);
-  next_count_log_s_ = wall_seconds() + 1.0;
-  thread_ = std::thread([this] { run(); });
+  thread_.start([this] { step(); }, [this] { drain(); });
 }
 
-LcmHighLevelAdapter::~LcmHighLevelAdapter() {
-  running_.store(false);
-  if (thread_.joinable()) thread_.join();
-}
+LcmHighLevelAdapter::~LcmHighLevelAdapter() { thread_.stop(); }
 
 void LcmHighLevelAdapter::on_cycle(const CycleRecord& record) {
   robot_time_s_.store(record.state.time_s, std::memory_order_relaxed);
@@ -103,18 +84,16 @@ HighLevelInterfaceCounters LcmHighLevelAdapter::counters() const {
   return c;
 }
 
-void LcmHighLevelAdapter::run() {
-  while (running_.load()) {
-    // everything that arrived, then what the loop queued
-    if (command_lcm_->handleTimeout(1) > 0) {
-      while (command_lcm_->handleTimeout(0) > 0) {
-      }
-    }
-    while (std::optional<Telemetry> telemetry = telemetry_.try_pop()) publish(*telemetry);
-    keep_response_alive();
-    log_refusals();
-    log_counts_once_per_second();
-  }
+void LcmHighLevelAdapter::step() {
+  // everything that arrived, then what the loop queued
+  handle_pending(*command_lcm_, 1);
+  drain();
+  keep_response_alive();
+  log_refusals();
+  log_counts_once_per_second();
+}
+
+void LcmHighLevelAdapter::drain() {
   while (std::optional<Telemetry> telemetry = telemetry_.try_pop()) publish(*telemetry);
 }
 
@@ -135,19 +114,20 @@ void LcmHighLevelAdapter::on_gait_file(const lcm::ReceiveBuffer* buffer, const s
   std::string text;
   const WireDecode decoded = decode_file_send(buffer->data, buffer->data_size, text);
   bool accepted = false;
+  std::string line;
   if (decoded != WireDecode::Ok) {
-    std::fprintf(log_, "highlevel: user_gait_file refused (result 1): %s packet of %u bytes\n", to_string(decoded),
-                 buffer->data_size);
+    line = "user_gait_file refused (result 1): " + std::string(to_string(decoded)) + " packet of " +
+           std::to_string(buffer->data_size) + " bytes";
   } else if (const UserGaitParse parsed = parse_user_gait_file(text); !parsed.file) {
-    std::fprintf(log_, "highlevel: user_gait_file refused (result 1): %s (user gaits not supported yet beyond "
-                 "storing a valid file)\n", parsed.error.c_str());
+    line = "user_gait_file refused (result 1): " + parsed.error +
+           " (user gaits not supported yet beyond storing a valid file)";
   } else {
     accepted = true;
     user_gaits_.store(*parsed.file);
-    std::fprintf(log_, "highlevel: user_gait_file stored (result 0), %s; running user gaits (11/110, 62/110) is "
-                 "not supported yet\n", describe_gait_file(*parsed.file).c_str());
+    line = "user_gait_file stored (result 0), " + describe_gait_file(*parsed.file) +
+           "; running user gaits (11/110, 62/110) is not supported yet";
   }
-  std::fflush(log_);
+  gait_file_log_.line(wall_seconds(), line);
   (accepted ? gait_files_accepted_ : gait_files_refused_).fetch_add(1);
   const file_recv_lcmt reply = make_file_result(accepted);
   command_lcm_->publish(kGaitResultChannel, &reply);
@@ -188,25 +168,13 @@ void LcmHighLevelAdapter::keep_response_alive() {
 
 void LcmHighLevelAdapter::log_refusals() {
   const double now_s = wall_seconds();
-  if (now_s - refusal_window_start_s_ >= 1.0) {
-    if (refusals_suppressed_ > 0) {
-      std::fprintf(log_, "highlevel: %llu more refusals (BAN_TRANS) in the last second not shown\n",
-                   static_cast<unsigned long long>(refusals_suppressed_));
-      std::fflush(log_);
-    }
-    refusal_window_start_s_ = now_s;
-    refusals_in_window_ = 0;
-    refusals_suppressed_ = 0;
-  }
+  refusal_log_.tick(now_s);
+  gait_file_log_.tick(now_s);
   while (std::optional<RefusalNote> note = machine_.refusals().try_pop()) {
-    if (refusals_in_window_ >= kRefusalLinesPerSecond) {
-      ++refusals_suppressed_;
-      continue;
-    }
-    ++refusals_in_window_;
-    std::fprintf(log_, "highlevel: refused mode %d gait %d while in mode %d (switch_status 5 BAN_TRANS): %s\n",
-                 note->mode, note->gait_id, note->from_mode, note->reason);
-    std::fflush(log_);
+    char line[256];
+    std::snprintf(line, sizeof line, "refused mode %d gait %d while in mode %d (switch_status 5 BAN_TRANS): %s",
+                  note->mode, note->gait_id, note->from_mode, note->reason);
+    refusal_log_.line(now_s, line);
   }
 }
 
@@ -225,18 +193,16 @@ LcmHighLevelAdapter::LoggedCounts LcmHighLevelAdapter::current_counts() const {
 }
 
 void LcmHighLevelAdapter::log_counts_once_per_second() {
-  const double now_s = wall_seconds();
-  if (now_s < next_count_log_s_) return;
-  next_count_log_s_ = now_s + 1.0;
+  if (!count_log_period_.due(wall_seconds())) return;
   const LoggedCounts now = current_counts();
   const LoggedCounts& before = logged_counts_;
   std::string text;
-  describe(text, now.wrong_fingerprint - before.wrong_fingerprint, "with a wrong fingerprint");
-  describe(text, now.truncated - before.truncated, "truncated");
-  describe(text, now.oversized - before.oversized, "oversized");
-  describe(text, now.non_finite - before.non_finite, "with NaN/Inf");
-  describe(text, now.queue_full - before.queue_full, "timed commands beyond the 64-entry queue");
-  describe(text, now.ring_overflow - before.ring_overflow, "arriving faster than the loop takes them");
+  append_count(text, now.wrong_fingerprint - before.wrong_fingerprint, "with a wrong fingerprint");
+  append_count(text, now.truncated - before.truncated, "truncated");
+  append_count(text, now.oversized - before.oversized, "oversized");
+  append_count(text, now.non_finite - before.non_finite, "with NaN/Inf");
+  append_count(text, now.queue_full - before.queue_full, "timed commands beyond the 64-entry queue");
+  append_count(text, now.ring_overflow - before.ring_overflow, "arriving faster than the loop takes them");
   if (!text.empty()) {
     std::fprintf(log_, "highlevel: robot_control_cmd packets rejected in the last second: %s\n", text.c_str());
   }
@@ -253,8 +219,7 @@ void LcmHighLevelAdapter::log_counts_once_per_second() {
 }
 
 void LcmHighLevelAdapter::finish(std::FILE* out) {
-  running_.store(false);
-  if (thread_.joinable()) thread_.join();
+  thread_.stop();
   log_refusals();
   const HighLevelInterfaceCounters c = counters();
   const CommandCounters& m = machine_.counters();

@@ -11,10 +11,12 @@
 #include <cstdio>
 #include <memory>
 #include <string>
-#include <thread>
 
 #include "app/control_loop.hpp"
 #include "core/spsc_ring.hpp"
+#include "io/common/adapter_thread.hpp"
+#include "io/common/count_report.hpp"
+#include "io/common/rate_limited_log.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_highlevel/response_schedule.hpp"
 #include "io/lcm_highlevel/user_gait_store.hpp"
@@ -72,7 +74,8 @@ class LcmHighLevelAdapter final : public CycleObserver {
     std::uint64_t non_finite = 0, queue_full = 0, ring_overflow = 0, timeouts = 0, telemetry_dropped = 0;
   };
 
-  void run();
+  void step();
+  void drain();
   void on_command(const lcm::ReceiveBuffer* buffer, const std::string& channel);
   void on_gait_file(const lcm::ReceiveBuffer* buffer, const std::string& channel);
   void publish(const Telemetry& telemetry);
@@ -107,18 +110,17 @@ class LcmHighLevelAdapter final : public CycleObserver {
   std::atomic<std::uint64_t> gait_files_accepted_{0};
   std::atomic<std::uint64_t> gait_files_refused_{0};
   std::atomic<std::uint64_t> feedback_sent_{0};
-  std::atomic<bool> running_{true};
   // interface thread only
   HighLevelStatus last_status_;
   bool has_status_ = false;
   std::uint64_t last_response_tick_ = 0;
   double last_response_wall_s_ = 0.0;
-  double refusal_window_start_s_ = 0.0;
-  int refusals_in_window_ = 0;
-  std::uint64_t refusals_suppressed_ = 0;
+  RateLimitedLog refusal_log_;
+  RateLimitedLog gait_file_log_;
   LoggedCounts logged_counts_;
-  double next_count_log_s_ = 0.0;
-  std::thread thread_;
+  EveryPeriod count_log_period_;
+  // last member: started once everything above is built, stopped first
+  AdapterThread thread_;
 };
 
 }  // namespace cerebellum

@@ -8,6 +8,8 @@
 #include <set>
 #include <sstream>
 
+#include "io/lcm_highlevel/toml_shape.hpp"
+
 namespace cerebellum {
 namespace {
 
@@ -201,6 +203,11 @@ UserGaitParse parse_user_gait_file(std::string_view text) {
     file.kind = UserGaitFile::Kind::Parameters;
   } else {
     result.error = "does not begin with '# Gait Def' or '# Gait Params'";
+    return result;
+  }
+  // the parser recurses on dotted keys and nesting: refuse deep shapes before it sees them
+  if (std::string shape = toml_shape_problem(text); !shape.empty()) {
+    result.error = "refused before parsing: " + shape;
     return result;
   }
   toml::table document;

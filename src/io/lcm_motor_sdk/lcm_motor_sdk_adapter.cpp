@@ -2,10 +2,10 @@
 
 #include <lcm/lcm-cpp.hpp>
 
-#include <chrono>
-#include <stdexcept>
 #include <string>
 
+#include "io/common/wall_clock.hpp"
+#include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
 #include "io/lcm_motor_sdk/robot_state_messages.hpp"
 
@@ -20,42 +20,23 @@ constexpr const char* kStateEstimatorChannel = "state_estimator";
 // outside motor mode the state feedback goes out every 10th tick (50 Hz at 500 Hz)
 constexpr std::uint64_t kIdleFeedbackDecimation = 10;
 
-std::unique_ptr<lcm::LCM> open_lcm(const std::string& url) {
-  auto lcm = std::make_unique<lcm::LCM>(url);
-  if (!lcm->good()) throw std::runtime_error("motor sdk: cannot open LCM url " + url);
-  return lcm;
-}
+constexpr const char* kInterfaceName = "motor sdk";
 
 template <typename Message>
 void publish_message(lcm::LCM& lcm, const char* channel, const Message& message) {
   lcm.publish(channel, &message);
 }
 
-// appends "<count> <what>" when count is not zero
-void describe(std::string& text, std::uint64_t count, const char* what) {
-  if (count == 0) return;
-  text += (text.empty() ? "" : ", ") + std::to_string(count) + " " + what;
-}
-
-double wall_seconds() {
-  using Clock = std::chrono::steady_clock;
-  return std::chrono::duration<double>(Clock::now().time_since_epoch()).count();
-}
-
 }  // namespace
 
 LcmMotorSdkAdapter::LcmMotorSdkAdapter(const MotorSdkConfig& config, std::FILE* log)
-    : source_(config.parameters), log_(log), control_lcm_(open_lcm(config.control_url)),
-      estimator_lcm_(open_lcm(config.estimator_url)) {
+    : source_(config.parameters), log_(log), control_lcm_(open_lcm_url(config.control_url, kInterfaceName)),
+      estimator_lcm_(open_lcm_url(config.estimator_url, kInterfaceName)), count_log_period_(wall_seconds()) {
   control_lcm_->subscribe(kMotorCtrlChannel, &LcmMotorSdkAdapter::on_motor_ctrl, this);
-  next_count_log_s_ = wall_seconds() + 1.0;
-  thread_ = std::thread([this] { run(); });
+  thread_.start([this] { step(); }, [this] { drain(); });
 }
 
-LcmMotorSdkAdapter::~LcmMotorSdkAdapter() {
-  running_.store(false);
-  if (thread_.joinable()) thread_.join();
-}
+LcmMotorSdkAdapter::~LcmMotorSdkAdapter() { thread_.stop(); }
 
 void LcmMotorSdkAdapter::on_cycle(const CycleRecord& record) {
   robot_time_s_.store(record.state.time_s, std::memory_order_relaxed);
@@ -71,27 +52,28 @@ MotorCtrlRejections LcmMotorSdkAdapter::rejections() const {
   return r;
 }
 
-void LcmMotorSdkAdapter::run() {
-  while (running_.load()) {
-    control_lcm_->handleTimeout(1);
-    while (std::optional<Telemetry> telemetry = telemetry_.try_pop()) {
-      publish(*telemetry);
-      log_changes(telemetry->status);
-    }
-    log_counts_once_per_second();
+void LcmMotorSdkAdapter::step() {
+  handle_pending(*control_lcm_, 1);
+  while (std::optional<Telemetry> telemetry = telemetry_.try_pop()) {
+    publish(*telemetry);
+    log_changes(telemetry->status);
   }
+  log_counts_once_per_second();
+}
+
+void LcmMotorSdkAdapter::drain() {
   while (std::optional<Telemetry> telemetry = telemetry_.try_pop()) publish(*telemetry);
 }
 
 void LcmMotorSdkAdapter::on_motor_ctrl(const lcm::ReceiveBuffer* buffer, const std::string&) {
   JointCommand frame;
   switch (decode_motor_ctrl(buffer->data, buffer->data_size, frame)) {
-    case MotorCtrlDecode::Ok:
+    case WireDecode::Ok:
       source_.mailbox().push(frame, robot_time_s_.load(std::memory_order_relaxed));
       return;
-    case MotorCtrlDecode::WrongFingerprint: wrong_fingerprint_.fetch_add(1, std::memory_order_relaxed); return;
-    case MotorCtrlDecode::Truncated: truncated_.fetch_add(1, std::memory_order_relaxed); return;
-    case MotorCtrlDecode::Oversized: oversized_.fetch_add(1, std::memory_order_relaxed); return;
+    case WireDecode::WrongFingerprint: wrong_fingerprint_.fetch_add(1, std::memory_order_relaxed); return;
+    case WireDecode::Truncated: truncated_.fetch_add(1, std::memory_order_relaxed); return;
+    case WireDecode::Oversized: oversized_.fetch_add(1, std::memory_order_relaxed); return;
   }
 }
 
@@ -132,25 +114,23 @@ void LcmMotorSdkAdapter::log_changes(const MotorSdkStatus& status) {
 }
 
 void LcmMotorSdkAdapter::log_counts_once_per_second() {
-  const double now_s = wall_seconds();
-  if (now_s < next_count_log_s_) return;
-  next_count_log_s_ = now_s + 1.0;
+  if (!count_log_period_.due(wall_seconds())) return;
   const Counts now{source_.counters(), rejections()};
   const Counts& before = logged_counts_;
   std::string text;
-  describe(text, now.rejected.wrong_fingerprint - before.rejected.wrong_fingerprint, "with a wrong fingerprint");
-  describe(text, now.rejected.truncated - before.rejected.truncated, "truncated");
-  describe(text, now.rejected.oversized - before.rejected.oversized, "oversized");
-  describe(text, now.rejected.non_finite - before.rejected.non_finite, "with NaN/Inf");
-  describe(text, now.source.frames_dropped - before.source.frames_dropped, "dropped (mailbox full)");
+  append_count(text, now.rejected.wrong_fingerprint - before.rejected.wrong_fingerprint, "with a wrong fingerprint");
+  append_count(text, now.rejected.truncated - before.rejected.truncated, "truncated");
+  append_count(text, now.rejected.oversized - before.rejected.oversized, "oversized");
+  append_count(text, now.rejected.non_finite - before.rejected.non_finite, "with NaN/Inf");
+  append_count(text, now.source.frames_dropped - before.source.frames_dropped, "dropped (mailbox full)");
   if (!text.empty()) std::fprintf(log_, "motor sdk: motor_ctrl packets rejected in the last second: %s\n", text.c_str());
   text.clear();
-  describe(text, now.source.clamped_gains - before.source.clamped_gains, "kp/kd");
-  describe(text, now.source.clamped_velocities - before.source.clamped_velocities, "qd_des");
-  describe(text, now.source.clamped_torques - before.source.clamped_torques, "tau_des");
-  describe(text, now.source.clamped_positions - before.source.clamped_positions, "q_des at a joint limit");
-  describe(text, now.source.clamped_jumps - before.source.clamped_jumps, "q_des jumps");
-  describe(text, now.source.frames_ignored_while_lost - before.source.frames_ignored_while_lost,
+  append_count(text, now.source.clamped_gains - before.source.clamped_gains, "kp/kd");
+  append_count(text, now.source.clamped_velocities - before.source.clamped_velocities, "qd_des");
+  append_count(text, now.source.clamped_torques - before.source.clamped_torques, "tau_des");
+  append_count(text, now.source.clamped_positions - before.source.clamped_positions, "q_des at a joint limit");
+  append_count(text, now.source.clamped_jumps - before.source.clamped_jumps, "q_des jumps");
+  append_count(text, now.source.frames_ignored_while_lost - before.source.frames_ignored_while_lost,
            "non-zero frames ignored while err_flag bit 1 is set");
   if (!text.empty()) std::fprintf(log_, "motor sdk: joint values clamped in the last second: %s\n", text.c_str());
   std::fflush(log_);
@@ -158,8 +138,7 @@ void LcmMotorSdkAdapter::log_counts_once_per_second() {
 }
 
 void LcmMotorSdkAdapter::finish(std::FILE* out) {
-  running_.store(false);
-  if (thread_.joinable()) thread_.join();
+  thread_.stop();
   const MotorSdkCounters c = source_.counters();
   const MotorCtrlRejections r = rejections();
   using ull = unsigned long long;

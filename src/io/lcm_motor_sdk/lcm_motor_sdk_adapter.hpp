@@ -9,10 +9,11 @@
 #include <cstdio>
 #include <memory>
 #include <string>
-#include <thread>
 
 #include "app/control_loop.hpp"
 #include "core/spsc_ring.hpp"
+#include "io/common/adapter_thread.hpp"
+#include "io/common/count_report.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
 #include "modes/motor_sdk/motor_sdk_source.hpp"
 
@@ -60,7 +61,8 @@ class LcmMotorSdkAdapter final : public CycleObserver {
     MotorCtrlRejections rejected;
   };
 
-  void run();
+  void step();
+  void drain();
   void on_motor_ctrl(const lcm::ReceiveBuffer* buffer, const std::string& channel);
   void publish(const Telemetry& telemetry);
   void log_changes(const MotorSdkStatus& status);
@@ -75,13 +77,13 @@ class LcmMotorSdkAdapter final : public CycleObserver {
   std::atomic<std::uint64_t> wrong_fingerprint_{0};
   std::atomic<std::uint64_t> truncated_{0};
   std::atomic<std::uint64_t> oversized_{0};
-  std::atomic<bool> running_{true};
   // adapter thread only
   MotorSdkStatus last_status_;
   bool refusal_logged_ = false;
   Counts logged_counts_;
-  double next_count_log_s_ = 0.0;  // wall clock seconds since start
-  std::thread thread_;
+  EveryPeriod count_log_period_;
+  // last member: started once everything above is built, stopped first
+  AdapterThread thread_;
 };
 
 }  // namespace cerebellum

@@ -13,12 +13,6 @@ constexpr std::uint32_t kWindingOverTemperature = 1u << 1;
 constexpr double kWarningTemperatureC = 82.0;
 constexpr double kShutdownTemperatureC = 87.0;
 
-std::uint64_t read_big_endian_u64(const std::uint8_t* bytes) {
-  std::uint64_t value = 0;
-  for (int i = 0; i < 8; ++i) value = (value << 8) | bytes[i];
-  return value;
-}
-
 // deg C to the wire's 0.1 deg C steps
 std::int16_t tenths_of_degree(double temperature_c) {
   const double tenths = std::round(temperature_c * 10.0);
@@ -29,17 +23,9 @@ std::int16_t tenths_of_degree(double temperature_c) {
 
 }  // namespace
 
-MotorCtrlDecode decode_motor_ctrl(const void* data, std::size_t size, JointCommand& sdk_command) {
-  static const int kEncodedSize = motor_ctrl_lcmt{}.getEncodedSize();
-  if (size < 8) return MotorCtrlDecode::Truncated;
-  const auto* bytes = static_cast<const std::uint8_t*>(data);
-  if (read_big_endian_u64(bytes) != static_cast<std::uint64_t>(motor_ctrl_lcmt::getHash())) {
-    return MotorCtrlDecode::WrongFingerprint;
-  }
-  if (size < static_cast<std::size_t>(kEncodedSize)) return MotorCtrlDecode::Truncated;
-  if (size > static_cast<std::size_t>(kEncodedSize)) return MotorCtrlDecode::Oversized;
+WireDecode decode_motor_ctrl(const void* data, std::size_t size, JointCommand& sdk_command) {
   motor_ctrl_lcmt message;
-  if (message.decode(data, 0, kEncodedSize) != kEncodedSize) return MotorCtrlDecode::Truncated;
+  if (const WireDecode checked = decode_fixed_size(data, size, message); checked != WireDecode::Ok) return checked;
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     const double sign = wire_sign(i % kJointsPerLeg);
     sdk_command.q_des[i] = sign * message.q_des[i];
@@ -48,7 +34,7 @@ MotorCtrlDecode decode_motor_ctrl(const void* data, std::size_t size, JointComma
     sdk_command.kd[i] = message.kd_des[i];
     sdk_command.tau_ff[i] = sign * message.tau_des[i];
   }
-  return MotorCtrlDecode::Ok;
+  return WireDecode::Ok;
 }
 
 motor_ctrl_lcmt encode_motor_ctrl(const JointCommand& sdk_command) {

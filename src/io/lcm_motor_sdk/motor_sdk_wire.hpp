@@ -7,6 +7,7 @@
 
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
+#include "io/lcm_common/lcm_packet.hpp"
 #include "modes/motor_sdk/motor_sdk_source.hpp"
 #include "motor_ctrl_lcmt.hpp"
 #include "motor_ctrl_state_lcmt.hpp"
@@ -14,16 +15,9 @@
 
 namespace cerebellum {
 
-enum class MotorCtrlDecode {
-  Ok,
-  WrongFingerprint,  // the first 8 bytes are not motor_ctrl_lcmt's hash
-  Truncated,         // shorter than 248 bytes
-  Oversized,         // longer than 248 bytes
-};
-
-// decodes one raw motor_ctrl packet into an SDK-convention command (kp, kd unchanged;
+// decodes one raw motor_ctrl packet (exactly 248 bytes) into an SDK-convention command (kp, kd unchanged;
 // q_des, qd_des, tau_des flipped); NaN/Inf pass through, the mailbox rejects them
-MotorCtrlDecode decode_motor_ctrl(const void* data, std::size_t size, JointCommand& sdk_command);
+WireDecode decode_motor_ctrl(const void* data, std::size_t size, JointCommand& sdk_command);
 
 // the wire message of an SDK-convention command (what a client sends)
 motor_ctrl_lcmt encode_motor_ctrl(const JointCommand& sdk_command);

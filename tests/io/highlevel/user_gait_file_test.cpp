@@ -122,5 +122,17 @@ TEST(UserGaitFile, ParameterErrorsNameTheStepAndKey) {
             std::string::npos);
 }
 
+// a text of ~80 kB with a dotted key 40,000 parts deep overflowed the parser's stack (SIGSEGV on
+// the adapter thread): it is refused before the parser sees it
+TEST(UserGaitFile, AKeyFortyThousandPartsDeepIsRefusedWithoutParsing) {
+  std::string key = "a";
+  for (int i = 1; i < 40000; ++i) key += ".a";
+  const std::string error = error_of("# Gait Def\n" + key + ".b = 1\n");
+  EXPECT_NE(error.find("refused before parsing: line 2: a dotted key with more than"), std::string::npos) << error;
+  std::string nested(40000, '[');
+  const std::string nesting_error = error_of("# Gait Params\nx = " + nested + "\n");
+  EXPECT_NE(nesting_error.find("nested more than"), std::string::npos) << nesting_error;
+}
+
 }  // namespace
 }  // namespace cerebellum
