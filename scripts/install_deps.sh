@@ -6,7 +6,7 @@ packages=(
   liblcm-dev liblcm-bin libglib2.0-dev liblcm-java default-jdk-headless
   libmujoco-dev libeigen3-dev libtomlplusplus-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libbenchmark-dev libalglib-dev
-  iproute2 util-linux python3 python3-matplotlib
+  iproute2 util-linux python3 python3-matplotlib python3-dev python3-setuptools
   libglfw3-dev libegl-dev libegl-mesa0 libgl1-mesa-dri ffmpeg xvfb xauth
 )
 missing=()
@@ -15,10 +15,12 @@ for p in "${packages[@]}"; do
 done
 if ((${#missing[@]} == 0)); then
   echo "install_deps: all ${#packages[@]} packages present"
-  exit 0
+else
+  echo "install_deps: installing ${missing[*]}"
+  sudo_cmd=()
+  [[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
+  "${sudo_cmd[@]}" apt-get update -qq
+  DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
 fi
-echo "install_deps: installing ${missing[*]}"
-sudo_cmd=()
-[[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
-"${sudo_cmd[@]}" apt-get update -qq
-DEBIAN_FRONTEND=noninteractive "${sudo_cmd[@]}" apt-get install -y -qq --no-install-recommends "${missing[@]}"
+# LCM's Python module, built from Debian's lcm source package (Debian ships no binary of it)
+"$(dirname "$0")/install_lcm_python.sh"

@@ -1,0 +1,63 @@
+#!/usr/bin/env bash
+# The seed's Python basic-motion example (section 2.4.1 of shared/seeds/000_*.txt), taken from the
+# seed at test time and run unmodified against the MC (with_sim.sh runs it), while
+# `cerebellum status` records the responses. Checks every step the MC offers: stand (12), the
+# hand shake (62/2) and two-leg stand (64) refused with BAN_TRANS until those motions exist (then
+# this test is tightened), head up / down (21/0), body height (21/5), turning trot (11/26), lie
+# down (7).
+#   seed_basic_motion.sh <cerebellum> <work dir> <seeds dir> <python3> <generated python types dir>
+set -u
+cerebellum=$1
+work=$2
+seeds=$3
+python=$4
+types=$5
+seed=$(ls "$seeds"/000_*.txt 2>/dev/null | head -1)
+if [[ -z "$seed" ]]; then
+  echo "skipped: no seed 000_*.txt in $seeds (shared/ is not beside the repository)"
+  exit 77
+fi
+example="$work/seed_basic_motion.py"
+# the first python block after the "#### 2.4.1" heading, exactly as written
+awk '/^#### 2\.4\.1/ {found = 1; next}
+     found && /^```python/ {inside = 1; next}
+     inside && /^```/ {exit}
+     inside {print}' "$seed" > "$example"
+if ! grep -q "robot_control_cmd" "$example"; then
+  echo "could not extract the basic-motion example from $seed"; exit 1
+fi
+echo "extracted $(wc -l < "$example") lines from $seed"
+"$cerebellum" status --rate 20 --count 100000 --timeout 10 > "$work/status.log" 2>&1 &
+status=$!
+PYTHONPATH="$types" timeout 150 "$python" "$example"
+result=$?
+kill -INT "$status" 2>/dev/null
+wait "$status" 2>/dev/null
+echo "example exit status: $result"
+[[ $result -eq 0 ]] || exit 1
+# the distinct response lines, in order
+cut -d' ' -f1-9 "$work/status.log" | grep '^mode' | uniq > "$work/steps.log"
+cat "$work/steps.log"
+fail=0
+expect() {  # expect <description> <regex>: a response line matching regex, after the previous one
+  local line
+  line=$(tail -n +"$from" "$work/steps.log" | grep -n -m1 -E "$2" | cut -d: -f1)
+  if [[ -z "$line" ]]; then
+    echo "MISSING: $1 (/$2/ after line $from)"; fail=1; return
+  fi
+  from=$((from + line - 1))
+  echo "seen: $1"
+}
+from=1
+expect "stand up reached (12, bar >= 95: the example's own test)" '^mode 12 gait 0 bar (9[5-9]|100) '
+expect "hand shake and two-leg stand refused (BAN_TRANS)" '^mode 12 gait 0 bar [0-9]+ switch 5 '
+expect "the stand finishes regardless (12, bar 100)" '^mode 12 gait 0 bar 100 switch 5 '
+expect "head up / down (21/0)" '^mode 21 gait 0 bar [0-9]+ switch 0 '
+expect "body height (21/5)" '^mode 21 gait 5 bar [0-9]+ switch 0 '
+expect "turning trot (11/26)" '^mode 11 gait 26 bar [0-9]+ switch 0 '
+expect "lie down (7)" '^mode 7 gait 0 bar [0-9]+ switch 0 '
+# a refused command leaves the queue as if never sent: no hold of its own (21/3) may follow it
+if grep -q '^mode 21 gait 3 ' "$work/steps.log"; then
+  echo "WRONG: a hold (21/3) that no command asked for"; fail=1
+fi
+exit "$fail"
