@@ -37,7 +37,10 @@ HighLevelCommand hold_command_after(const HighLevelCommand& last) {
   return hold;
 }
 
-CommandQueue::CommandQueue(double tick_period_s) : tick_period_s_(tick_period_s) { entries_.reserve(kCapacity + 1); }
+CommandQueue::CommandQueue(double tick_period_s) : tick_period_s_(tick_period_s) {
+  entries_.reserve(kCapacity + 1);
+  before_last_receive_.reserve(kCapacity + 1);
+}
 
 CommandQueue::Receipt CommandQueue::receive(const HighLevelCommand& command, double time_s) {
   client_seen_ = true;
@@ -48,10 +51,14 @@ CommandQueue::Receipt CommandQueue::receive(const HighLevelCommand& command, dou
   if (command.mode == -1) return Receipt::Ignored;
 
   const long duration_ticks = std::lround(std::floor(std::max(0, command.duration) * 1e-3 / tick_period_s_ + 1e-9));
+  // kept (within the reserved capacity) until the machine has accepted or refused the command
+  before_last_receive_ = entries_;
+  const std::uint64_t generation_before = generation_;
   if (command.duration <= 0 && command.mode != kMotionMode) {
     entries_.clear();
     entries_.push_back({command, -1});
     start_front();
+    generation_of_last_receive_ = generation_;
     return Receipt::RunsNow;
   }
   // a timed entry: endless entries waiting in front of it are dropped
@@ -60,6 +67,7 @@ CommandQueue::Receipt CommandQueue::receive(const HighLevelCommand& command, dou
   if (entries_.size() >= kCapacity) return Receipt::QueueFull;
   entries_.push_back({command, duration_ticks});
   if (entries_.size() == 1 || front_was_endless) start_front();
+  generation_of_last_receive_ = generation_ != generation_before ? generation_ : 0;
   return Receipt::Queued;
 }
 
@@ -69,6 +77,7 @@ void CommandQueue::tick(bool switching) {
   if (front.ticks_left < 0) return;
   if (--front.ticks_left > 0) return;
   const HighLevelCommand finished = front.command;
+  last_finished_ = finished;
   entries_.erase(entries_.begin());
   if (entries_.empty()) entries_.push_back({hold_command_after(finished), -1});
   start_front();
@@ -78,7 +87,20 @@ bool CommandQueue::timed_out(double time_s) const {
   return client_seen_ && time_s - last_receive_s_ > kHeartbeatTimeoutS;
 }
 
+void CommandQueue::withdraw_current() {
+  if (entries_.empty()) return;
+  if (generation_of_last_receive_ != 0 && generation_of_last_receive_ == generation_) {
+    entries_ = before_last_receive_;
+    generation_of_last_receive_ = 0;
+    return;
+  }
+  entries_.erase(entries_.begin());
+  if (entries_.empty()) entries_.push_back({hold_command_after(last_finished_), -1});
+  start_front();
+}
+
 void CommandQueue::clear() {
+  generation_of_last_receive_ = 0;
   entries_.clear();
   client_seen_ = false;
   ++generation_;

@@ -32,6 +32,11 @@ class CommandQueue {
   bool timed_out(double time_s) const;
   // forget every entry and the client (after a timeout or a mode forced by the MC)
   void clear();
+  // the machine refused current(): take it out as if it had never been sent. When it came in
+  // with the last receive(), the queue is as it was before that receive (entries it replaced
+  // come back, the generation does not change: nothing new to apply). Otherwise the next entry,
+  // or the hold after the last finished one, becomes current (a new generation).
+  void withdraw_current();
 
   // the entry that should run now, or nullptr
   const HighLevelCommand* current() const;
@@ -48,6 +53,9 @@ class CommandQueue {
 
   double tick_period_s_;
   std::vector<Entry> entries_;
+  std::vector<Entry> before_last_receive_;     // entries_ as they were before the last receive()
+  std::uint64_t generation_of_last_receive_ = 0;  // generation_ right after it; 0: none since
+  HighLevelCommand last_finished_;             // the last timed entry that ran out
   int last_life_count_ = -1;
   bool client_seen_ = false;
   double last_receive_s_ = 0.0;

@@ -91,31 +91,32 @@ void HighLevelMachine::watch_body(const RobotState& state) {
   }
 }
 
-void HighLevelMachine::apply(const RobotState& state, const HighLevelCommand& command) {
+bool HighLevelMachine::apply(const RobotState& state, const HighLevelCommand& command) {
   Mode* target = mode_for(command.mode);
   if (target == nullptr) {
     refuse(command, is_known_mode(command.mode) ? "mode not available in this MC" : "unknown mode");
-    return;
+    return false;
   }
   if (const char* reason = target->check(command)) {
     refuse(command, reason);
-    return;
+    return false;
   }
   if (const char* reason = protection_refusal(target->id())) {
     refuse(command, reason);
-    return;
+    return false;
   }
   if (target == current_) {
     banned_ = false;
     running_command_ = command;
     current_->update(state, command);
-    return;
+    return true;
   }
   if (!transition_allowed(current_->id(), target->id())) {
     refuse(command, "transition not allowed from the current mode");
-    return;
+    return false;
   }
   switch_to(*target, state, command);
+  return true;
 }
 
 void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
@@ -151,9 +152,18 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
       switch_to(*damper, state, damp);
     }
   }
-  if (queue_.generation() != applied_generation_) {
+  // a refused entry leaves the queue as if it had never been sent (it neither waits out its
+  // duration nor leaves a hold behind); what follows it is applied at once
+  for (std::size_t attempt = 0; queue_.generation() != applied_generation_; ++attempt) {
     applied_generation_ = queue_.generation();
-    if (const HighLevelCommand* next = queue_.current()) apply(state, *next);
+    const HighLevelCommand* next = queue_.current();
+    if (next == nullptr || apply(state, *next)) break;
+    queue_.withdraw_current();
+    // every withdrawal removes an entry; a hold that is refused too is not tried again
+    if (attempt > CommandQueue::kCapacity) {
+      applied_generation_ = queue_.generation();
+      break;
+    }
   }
   watch_body(state);
   queue_.tick(current_->progress_percent() < 100);

@@ -60,7 +60,8 @@ class HighLevelMachine final : public OwnBehaviour {
 
  private:
   Mode* mode_for(int mode) const;
-  void apply(const RobotState& state, const HighLevelCommand& command);
+  // false when the command was refused
+  bool apply(const RobotState& state, const HighLevelCommand& command);
   void switch_to(Mode& mode, const RobotState& state, const HighLevelCommand& command);
   void refuse(const HighLevelCommand& command, const char* reason);
   void update_status(const RobotState& state);

@@ -143,5 +143,56 @@ TEST(CommandQueue, FullQueueRefusesMoreTimedEntries) {
   EXPECT_EQ(queue.receive(cmd(21, 0, 100, 100), 0.0), CommandQueue::Receipt::QueueFull);
 }
 
+TEST(CommandQueue, AWithdrawnCommandLeavesTheQueueAsItWasBeforeItArrived) {
+  CommandQueue queue(0.002);
+  queue.receive(cmd(11, 10, 1, 0), 0.0);  // trotting, until replaced
+  const std::uint64_t trotting = queue.generation();
+  // a timed entry drops the endless trot in front of it; withdrawn, the trot is back unchanged
+  queue.receive(cmd(64, 0, 2, 2000), 0.0);
+  ASSERT_EQ(queue.current()->mode, 64);
+  queue.withdraw_current();
+  ASSERT_NE(queue.current(), nullptr);
+  EXPECT_EQ(queue.current()->mode, 11);
+  EXPECT_EQ(queue.current()->gait_id, 10);
+  EXPECT_EQ(queue.size(), 1u);
+  EXPECT_NE(queue.generation(), trotting);  // the machine notes it has nothing new to apply
+  const std::uint64_t after = queue.generation();
+  for (int i = 0; i < 2000; ++i) queue.tick(false);  // no hold of the withdrawn entry ever comes
+  EXPECT_EQ(queue.current()->mode, 11);
+  EXPECT_EQ(queue.generation(), after);
+  // a duration-0 command that replaced a timed sequence brings the sequence back
+  queue.receive(cmd(21, 0, 3, 1000), 0.0);
+  queue.receive(cmd(21, 5, 4, 1000), 0.0);
+  queue.receive(cmd(64, 0, 5, 0), 0.0);
+  ASSERT_EQ(queue.size(), 1u);
+  queue.withdraw_current();
+  ASSERT_EQ(queue.size(), 2u);
+  EXPECT_EQ(queue.current()->gait_id, 0);
+}
+
+TEST(CommandQueue, AWithdrawnEntryThatCameUpInTurnGivesWayToTheNextOrToTheHoldBeforeIt) {
+  CommandQueue queue(0.002);
+  queue.receive(cmd(21, 0, 1, 4), 0.0);
+  queue.receive(cmd(64, 0, 2, 4), 0.0);
+  queue.receive(cmd(21, 5, 3, 4), 0.0);
+  queue.tick(false);
+  queue.tick(false);  // 21/0 ran out: 64 is current
+  ASSERT_EQ(queue.current()->mode, 64);
+  const std::uint64_t before = queue.generation();
+  queue.withdraw_current();
+  EXPECT_NE(queue.generation(), before);
+  EXPECT_EQ(queue.current()->mode, 21);
+  EXPECT_EQ(queue.current()->gait_id, 5);
+  queue.tick(false);
+  queue.tick(false);
+  queue.receive(cmd(16, 0, 4, 4), 0.0);  // arrives behind the hold of 21/5: replaces it
+  EXPECT_EQ(queue.current()->mode, 16);
+  queue.tick(false);
+  queue.tick(false);
+  // the jump's hold came up in turn; withdrawn, the queue falls back to the hold of 21/5 before it
+  ASSERT_EQ(queue.current()->mode, 21);
+  EXPECT_EQ(queue.current()->gait_id, 3);
+}
+
 }  // namespace
 }  // namespace cerebellum

@@ -209,5 +209,46 @@ TEST(HighLevelMachine, ContactBitsComeFromTheEstimate) {
   for (std::uint32_t e : m.machine.status().motor_error) EXPECT_EQ(e, kMotorHealthy);
 }
 
+TEST(HighLevelMachine, ARefusedCommandLeavesTheQueueAsIfItHadNeverBeenSent) {
+  Machine m(ModeId::RecoveryStand);
+  m.tick();
+  m.machine.submit(cmd(ModeId::Locomotion, 10, 1), m.state.time_s);
+  m.tick();
+  ASSERT_EQ(m.machine.status().mode, 11);
+  // two-leg stand with a duration: not in this machine, refused
+  m.machine.submit(cmd(ModeId::TwoLegStand, 0, 2, 2000), m.state.time_s);
+  m.tick();
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::BanTransition);
+  const int updates = m.loco.updated;
+  // the trot goes on past the refused entry's duration: no hold, no update, heartbeats only
+  for (int i = 0; i < 1500; ++i) {
+    if (i % 50 == 0) m.machine.submit(cmd(ModeId::TwoLegStand, 0, 2, 2000), m.state.time_s);
+    m.tick();
+  }
+  EXPECT_EQ(m.machine.status().mode, 11);
+  EXPECT_EQ(m.machine.status().gait_id, 10);
+  EXPECT_EQ(m.loco.updated, updates);
+  EXPECT_EQ(m.pose.entered, 0);
+}
+
+TEST(HighLevelMachine, ARefusedMotionAfterAStandLeavesTheStandRunning) {
+  Machine m(ModeId::RecoveryStand);
+  m.tick();
+  m.machine.submit(cmd(ModeId::RecoveryStand, 0, 1), m.state.time_s);
+  m.tick();
+  m.machine.submit(cmd(ModeId::Motion, 2, 2), m.state.time_s);  // duration 0, as the seed sends it
+  for (int i = 0; i < 100; ++i) {
+    if (i % 50 == 0) m.machine.submit(cmd(ModeId::Motion, 2, 2), m.state.time_s);
+    m.tick();
+  }
+  EXPECT_EQ(m.machine.status().mode, 12);
+  EXPECT_EQ(m.pose.entered, 0);  // no 21/3 hold nobody asked for
+  // the next command behind it runs at once, as if the refused one had not been sent
+  m.machine.submit(cmd(ModeId::PoseControl, 0, 3, 500), m.state.time_s);
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, 21);
+  EXPECT_EQ(m.machine.status().gait_id, 0);
+}
+
 }  // namespace
 }  // namespace cerebellum
