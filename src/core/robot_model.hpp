@@ -11,6 +11,9 @@ namespace cerebellum::robot {
 inline constexpr double kPi = 3.14159265358979323846;
 constexpr double deg(double degrees) { return degrees * kPi / 180.0; }
 
+// standard gravity (m/s^2), the figure every controller, estimator and simulated IMU uses
+inline constexpr double kGravityMPerS2 = 9.81;
+
 // geometry (m)
 inline constexpr double kHipX = 0.164;        // abad joint, body frame, +-x
 inline constexpr double kHipY = 0.042;        // abad joint, body frame, +-y

@@ -44,12 +44,12 @@ struct LocomotionStandRanges {
   double default_height_m = 0.235;  // used when pos_des[2] <= 0 (not given)
 };
 
-// mode 11 velocity limits of a gait (reference table; clamped, not rejected)
+// mode 11 velocity limits of a gait (gait table; clamped, not rejected)
 struct VelocityLimits {
   Eigen::Vector3d min;  // vx, vy (m/s), yaw rate (rad/s)
   Eigen::Vector3d max;
 };
-// nullptr for gaits without a velocity table (stand gaits, user gaits)
+// nullptr for gaits without velocity limits (stand gaits, user gaits, unknown ids)
 const VelocityLimits* locomotion_velocity_limits(int gait_id);
 inline constexpr Range kStepHeightRange{0.0, 0.06};
 
