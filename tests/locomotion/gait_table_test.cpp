@@ -80,7 +80,9 @@ TEST(GaitTable, EveryPatternIsBuiltFromItsEntry) {
 TEST(GaitTable, TheVariableTrotsCyclesShortenAsSpeedGrowsAndStayTrots) {
   for (std::size_t step = 0; step < kVariableTrotCycles.size(); ++step) {
     const GaitCycle cycle = kVariableTrotCycles[step];
-    if (step > 0) EXPECT_LT(cycle.period_segments, kVariableTrotCycles[step - 1].period_segments);
+    if (step > 0) {
+      EXPECT_LT(cycle.period_segments, kVariableTrotCycles[step - 1].period_segments);
+    }
     EXPECT_LT(cycle.stance_segments, cycle.period_segments);
     // in the middle of the step's speed band
     const GaitPattern p = variable_trot_pattern((step + 0.5) * kVariableTrotSpeedPerCycleMPerS);
