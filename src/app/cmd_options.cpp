@@ -48,7 +48,13 @@ std::string join(const std::set<std::string>& words) {
 }
 
 // "[lower, upper]"
-std::string interval(const Range& range) { return "[" + format(range.lower) + ", " + format(range.upper) + "]"; }
+std::string interval(const Range& range) {
+  std::string text = "[";
+  text += format(range.lower);
+  text += ", ";
+  text += format(range.upper);
+  return text + "]";
+}
 
 // the gait ids `walk` accepts: the stepping gaits of the gait table, e.g. "2, 3, 4"
 std::string walking_gait_ids() {
