@@ -110,7 +110,7 @@ BENCHMARK(BM_KalmanFilterUpdate)->Unit(benchmark::kMicrosecond);
 void BM_BodyStateEstimatorUpdate(benchmark::State& bench) {
   SensorFrame frame;
   frame.q = robot::whole_body_pose(robot::kStandPose);
-  frame.imu_accel = {0.0, 0.0, 9.81};
+  frame.imu_accel = {0.0, 0.0, robot::kGravityMPerS2};
   frame.tau = robot::whole_body_pose({0.0, -2.0, 3.0});
   BodyStateEstimator estimator;
   RobotState state;

@@ -18,6 +18,7 @@
 #include <vector>
 
 #include "app/lockstep_client.hpp"
+#include "core/orientation.hpp"
 
 namespace {
 
@@ -34,8 +35,7 @@ McConfig config_for(const std::string& model_file) {
 }
 
 double yaw_of(const GroundTruth& g) {
-  return std::atan2(2 * (g.quat[0] * g.quat[3] + g.quat[1] * g.quat[2]),
-                    1 - 2 * (g.quat[2] * g.quat[2] + g.quat[3] * g.quat[3]));
+  return rpy_from_quaternion(Eigen::Quaterniond(g.quat[0], g.quat[1], g.quat[2], g.quat[3])).z();
 }
 
 bool upright(const GroundTruth& g) {

@@ -10,6 +10,7 @@
 
 #include "control/locomotion/convex_mpc.hpp"
 #include "control/qp/goldfarb_idnani_solver.hpp"
+#include "core/robot_model.hpp"
 
 namespace {
 
@@ -21,7 +22,7 @@ MpcInput varied_input(std::mt19937& rng, bool trot, int phase) {
   MpcInput in;
   in.x0 << 0.02 * noise(rng), 0.02 * noise(rng), 0.3 * noise(rng), 0, 0, 0.25 + 0.01 * noise(rng),
       0.2 * noise(rng), 0.2 * noise(rng), 0.3 * noise(rng), 0.8 + 0.1 * noise(rng), 0.05 * noise(rng),
-      0.05 * noise(rng), -9.81;
+      0.05 * noise(rng), -robot::kGravityMPerS2;
   for (int k = 0; k < kMpcHorizon; ++k) {
     in.x_ref[k] = in.x0;
     in.x_ref[k].head<3>() << 0, 0, in.x0[2];

@@ -1,6 +1,8 @@
 #include "app/cmd_options.hpp"
 
 #include "app/number_text.hpp"
+#include "control/locomotion/gait_table.hpp"
+#include "modes/command_ranges.hpp"
 
 #include <array>
 #include <cmath>
@@ -14,27 +16,8 @@
 namespace cerebellum {
 namespace {
 
-struct Range {
-  double lower;
-  double upper;
-};
-
-// velocity limits of a locomotion gait: (vx m/s, vy m/s, yaw rate rad/s)
-struct GaitLimits {
-  int gait;
-  std::array<double, 3> min;
-  std::array<double, 3> max;
-};
-constexpr std::array<GaitLimits, 7> kGaitLimits{{
-    {2, {-0.10, -0.15, -0.50}, {0.20, 0.15, 0.50}},
-    {3, {-1.2, -0.4, -2.25}, {1.2, 0.4, 2.25}},
-    {4, {-0.65, -0.4, -0.80}, {0.65, 0.4, 0.80}},
-    {7, {-0.3, -0.3, -1.5}, {0.3, 0.3, 1.5}},
-    {10, {-1.2, -0.55, -2.5}, {1.6, 0.55, 2.5}},
-    {26, {-1.2, -0.6, -2.5}, {1.6, 0.6, 2.5}},
-    {27, {-0.60, -0.2, -1.30}, {0.60, 0.2, 1.30}},
-}};
 constexpr int kDefaultWalkGait = 27;
+constexpr double kWalkStepHeightM = 0.05;  // what `walk` sends when --step-height is not given
 constexpr double kMaxDurationS = 2147483.0;  // int32 milliseconds
 
 const std::map<std::string, std::set<std::string>>& verb_options() {
@@ -62,6 +45,24 @@ std::string join(const std::set<std::string>& words) {
   std::string out;
   for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
   return out;
+}
+
+// "[lower, upper]"
+std::string interval(const Range& range) {
+  std::string text = "[";
+  text += format(range.lower);
+  text += ", ";
+  text += format(range.upper);
+  return text + "]";
+}
+
+// the gait ids `walk` accepts: the stepping gaits of the gait table, e.g. "2, 3, 4"
+std::string walking_gait_ids() {
+  std::string ids;
+  for (const GaitSpec& gait : kGaitTable) {
+    if (gait_steps(gait)) ids += (ids.empty() ? "" : ", ") + std::to_string(gait.id);
+  }
+  return ids;
 }
 
 // the option values of one command line, checked against the accepted option names
@@ -155,21 +156,20 @@ void set_mode(robot_control_cmd_lcmt& command, int mode, int gait_id) {
 }
 
 void build_walk(const OptionValues& values, robot_control_cmd_lcmt& command) {
-  std::string gait_names;
-  for (const GaitLimits& limits : kGaitLimits) gait_names += (gait_names.empty() ? "" : ", ") + std::to_string(limits.gait);
   const long gait = values.integer("--gait", 0, 127, kDefaultWalkGait);
-  const GaitLimits* limits = nullptr;
-  for (const GaitLimits& candidate : kGaitLimits) {
-    if (candidate.gait == gait) limits = &candidate;
+  const GaitSpec* limits = find_gait(static_cast<int>(gait));
+  if (limits == nullptr || !gait_steps(*limits)) {
+    values.fail("--gait must be one of " + walking_gait_ids() + ", got " + std::to_string(gait));
   }
-  if (limits == nullptr) values.fail("--gait must be one of " + gait_names + ", got " + std::to_string(gait));
   const std::string context = " (gait " + std::to_string(gait) + ")";
-  set_mode(command, 11, static_cast<int>(gait));
-  command.vel_des[0] = static_cast<float>(values.number("--vx", {limits->min[0], limits->max[0]}, (" m/s" + context).c_str(), 0.0));
-  command.vel_des[1] = static_cast<float>(values.number("--vy", {limits->min[1], limits->max[1]}, (" m/s" + context).c_str(), 0.0));
+  set_mode(command, static_cast<int>(ModeId::Locomotion), static_cast<int>(gait));
+  const auto& min = limits->velocity_min;
+  const auto& max = limits->velocity_max;
+  command.vel_des[0] = static_cast<float>(values.number("--vx", {min[0], max[0]}, (" m/s" + context).c_str(), 0.0));
+  command.vel_des[1] = static_cast<float>(values.number("--vy", {min[1], max[1]}, (" m/s" + context).c_str(), 0.0));
   command.vel_des[2] =
-      static_cast<float>(values.number("--yaw-rate", {limits->min[2], limits->max[2]}, (" rad/s" + context).c_str(), 0.0));
-  const double step_height_m = values.number("--step-height", {0.0, 0.06}, " m", 0.05);
+      static_cast<float>(values.number("--yaw-rate", {min[2], max[2]}, (" rad/s" + context).c_str(), 0.0));
+  const double step_height_m = values.number("--step-height", kStepHeightRange, " m", kWalkStepHeightM);
   command.step_height[0] = command.step_height[1] = static_cast<float>(step_height_m);
   command.duration = duration_ms(values, 0.0, 0.0);
 }
@@ -193,6 +193,9 @@ void build_raw(const OptionValues& values, robot_control_cmd_lcmt& command) {
 }  // namespace
 
 std::string cmd_usage() {
+  const QpStandRanges pose;
+  const PoseControlRanges height;
+  const GaitSpec& default_gait = *find_gait(kDefaultWalkGait);
   return "usage: cerebellum cmd <verb> [options]\n"
          "  sends one robot_control_cmd, waits for the mode (order_process_bar >= 95), then keeps the heartbeat\n"
          "verbs:\n"
@@ -200,14 +203,19 @@ std::string cmd_usage() {
          "  lie                    active lie-down to the lying pose (7, 1)\n"
          "  damp                   passive lie-down, joint damping (7, 0)\n"
          "  pose [--roll R] [--pitch P] [--yaw Y] [--height H] [--duration S]\n"
-         "                         QP stand (3, 0): roll in [-0.52, 0.52] rad and pitch in [-0.25, 0.3] rad absolute,\n"
-         "                         yaw in [-0.65, 0.65] rad relative, height in [0.15, 0.32] m (default 0.235)\n"
+         "                         QP stand (3, 0): roll in " + interval(pose.roll) + " rad and pitch in " +
+         interval(pose.pitch) + " rad absolute,\n"
+         "                         yaw in " + interval(pose.yaw) + " rad relative, height in " + interval(pose.height) +
+         " m (default " + format(pose.default_height_m) + ")\n"
          "  height H [--duration S]\n"
-         "                         body height H in [0.15, 0.27] m (pose control 21, 5) over S s (default 1)\n"
+         "                         body height H in " + interval(height.height) +
+         " m (pose control 21, 5) over S s (default 1)\n"
          "  walk [--vx V] [--vy V] [--yaw-rate W] [--gait N] [--step-height H] [--duration S]\n"
-         "                         locomotion (11, N), N in 2, 3, 4, 7, 10, 26, 27 (default 27, slow trot);\n"
+         "                         locomotion (11, N), N in " + walking_gait_ids() + " (default " +
+         std::to_string(default_gait.id) + ", " + default_gait.name + ");\n"
          "                         velocities within the gait's limits (docs/highlevel.md); step height in\n"
-         "                         [0, 0.06] m (default 0.05); S = 0 (default) walks until replaced\n"
+         "                         " + interval(kStepHeightRange) + " m (default " + format(kWalkStepHeightM) +
+         "); S = 0 (default) walks until replaced\n"
          "  raw --mode M [--gait G] [--contact C] [--value V] [--duration S] [--vel x,y,yaw] [--rpy r,p,y]\n"
          "      [--pos x,y,z] [--acc a1,...,a6] [--ctrl-point x,y,z] [--foot-pose p1,...,p6] [--step-height f,r]\n"
          "                         any command; M, G, C in [-128, 127]\n"
@@ -266,23 +274,25 @@ CmdOptions parse_cmd_options(const std::vector<std::string>& args) {
 
   robot_control_cmd_lcmt& command = options.command;
   if (options.verb == "stand") {
-    set_mode(command, 12, 0);
+    set_mode(command, static_cast<int>(ModeId::RecoveryStand), 0);
   } else if (options.verb == "lie" || options.verb == "damp") {
-    set_mode(command, 7, options.verb == "lie" ? 1 : 0);
+    set_mode(command, static_cast<int>(ModeId::PureDamper), options.verb == "lie" ? 1 : 0);
     if (!options.hold_s) options.hold_s = 0.0;
   } else if (options.verb == "pose") {
-    set_mode(command, 3, 0);
-    command.rpy_des[0] = static_cast<float>(values.number("--roll", {-0.52, 0.52}, " rad", 0.0));
-    command.rpy_des[1] = static_cast<float>(values.number("--pitch", {-0.25, 0.3}, " rad", 0.0));
-    command.rpy_des[2] = static_cast<float>(values.number("--yaw", {-0.65, 0.65}, " rad", 0.0));
-    command.pos_des[2] = static_cast<float>(values.number("--height", {0.15, 0.32}, " m", 0.235));
+    const QpStandRanges ranges;
+    set_mode(command, static_cast<int>(ModeId::QpStand), 0);
+    command.rpy_des[0] = static_cast<float>(values.number("--roll", ranges.roll, " rad", 0.0));
+    command.rpy_des[1] = static_cast<float>(values.number("--pitch", ranges.pitch, " rad", 0.0));
+    command.rpy_des[2] = static_cast<float>(values.number("--yaw", ranges.yaw, " rad", 0.0));
+    command.pos_des[2] = static_cast<float>(values.number("--height", ranges.height, " m", ranges.default_height_m));
     command.duration = duration_ms(values, 0.0, 0.0);
   } else if (options.verb == "height") {
+    const Range range = PoseControlRanges{}.height;
     const std::optional<double> height_m = finite_number(height_text);
-    if (!height_m || *height_m < 0.15 || *height_m > 0.27) {
-      values.fail("H must be a number in [0.15, 0.27] m, got '" + height_text + "'");
+    if (!height_m || *height_m < range.lower || *height_m > range.upper) {
+      values.fail("H must be a number in " + interval(range) + " m, got '" + height_text + "'");
     }
-    set_mode(command, 21, 5);
+    set_mode(command, static_cast<int>(ModeId::PoseControl), 5);
     command.pos_des[2] = static_cast<float>(*height_m);
     command.duration = duration_ms(values, 0.001, 1.0);
   } else if (options.verb == "walk") {

@@ -1,5 +1,6 @@
 #include "app/mc.hpp"
 
+#include "control/locomotion/gait_table.hpp"
 #include "control/qp/goldfarb_idnani_solver.hpp"
 
 #include <cmath>
@@ -50,11 +51,9 @@ Mc::Mc(const McConfig& config)
   machine_.add_mode(pose_control_);
   machine_.add_mode(lifted_);
   // the walking gaits run on the MPC locomotion controller; the stands on the configured one
-  for (int gait : {2, 3, 4, 7, 10, 26, 27}) gaits_.add(gait, walking_);
   LocomotionGait& stand = config.locomotion_stand == LocomotionStand::Mpc ? static_cast<LocomotionGait&>(walking_)
                                                                           : qp_stand_gait_;
-  gaits_.add(1, stand);
-  gaits_.add(31, stand);
+  for (const GaitSpec& gait : kGaitTable) gaits_.add(gait.id, gait_steps(gait) ? walking_ : stand);
   machine_.add_mode(locomotion_);
 }
 

@@ -8,6 +8,7 @@
 #include <stdexcept>
 
 #include "app/viewer_snapshot.hpp"
+#include "core/orientation.hpp"
 
 namespace cerebellum {
 namespace {
@@ -22,17 +23,6 @@ void append_number(std::string& line, double value) {
 }
 
 }  // namespace
-
-std::array<double, 3> rpy_from_quat(const std::array<double, 4>& quat) {
-  const double w = quat[0];
-  const double x = quat[1];
-  const double y = quat[2];
-  const double z = quat[3];
-  const double roll = std::atan2(2.0 * (w * x + y * z), 1.0 - 2.0 * (x * x + y * y));
-  const double pitch = std::asin(std::clamp(2.0 * (w * y - z * x), -1.0, 1.0));
-  const double yaw = std::atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z));
-  return {roll, pitch, yaw};
-}
 
 TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, const HighLevelStatus& status,
                            const HighLevelCommand& running) {
@@ -51,7 +41,9 @@ TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, 
   row.est_rpy = {state.rpy.x(), state.rpy.y(), state.rpy.z()};
   row.truth_velocity = planar_velocity_body(truth.quat, truth.velocity_world, truth.angular_velocity_body);
   row.truth_z_m = truth.position[2];
-  row.truth_rpy = rpy_from_quat(truth.quat);
+  const Eigen::Vector3d truth_rpy =
+      rpy_from_quaternion(Eigen::Quaterniond(truth.quat[0], truth.quat[1], truth.quat[2], truth.quat[3]));
+  row.truth_rpy = {truth_rpy.x(), truth_rpy.y(), truth_rpy.z()};
   row.tau_nm = state.tau;
   row.temperature_c = state.temperature_c;
   return row;

@@ -36,8 +36,6 @@ struct TelemetryRow {
   JointArray<double> temperature_c{};
 };
 
-// roll, pitch, yaw (ZYX) of a unit quaternion w, x, y, z
-std::array<double, 3> rpy_from_quat(const std::array<double, 4>& quat);
 TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, const HighLevelStatus& status,
                            const HighLevelCommand& running);
 // the header line and one row, without the newline

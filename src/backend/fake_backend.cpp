@@ -1,12 +1,13 @@
 #include "backend/fake_backend.hpp"
 
 #include "backend/motor_model.hpp"
+#include "core/robot_model.hpp"
 
 namespace cerebellum {
 
 FakeBackend::FakeBackend(const JointArray<double>& initial_q) {
   frame_.q = initial_q;
-  frame_.imu_accel = {0.0, 0.0, 9.81};
+  frame_.imu_accel = {0.0, 0.0, robot::kGravityMPerS2};
 }
 
 SensorFrame FakeBackend::read() {

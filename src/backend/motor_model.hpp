@@ -2,12 +2,14 @@
 // torque limit, speed-torque curve, and a first-order winding temperature model.
 #pragma once
 
+#include "core/robot_model.hpp"
+
 namespace cerebellum {
 
 struct MotorLimits {
-  double torque_max_nm = 12.0;
-  double full_torque_speed_rad_s = 11.52;  // full torque below this joint speed
-  double no_load_speed_rad_s = 30.5;       // driving torque reaches zero here
+  double torque_max_nm = robot::kTorqueMaxNm;
+  double full_torque_speed_rad_s = robot::kFullTorqueSpeedRadS;  // full torque below this joint speed
+  double no_load_speed_rad_s = robot::kNoLoadSpeedRadS;          // driving torque reaches zero here
 };
 
 // tau = tau_ff + kp (q_des - q) + kd (qd_des - qd)
@@ -22,9 +24,9 @@ struct MotorThermalParameters {
   double ambient_c = 25.0;
   double thermal_resistance_k_per_w = 1.2;  // winding to ambient
   double heat_capacity_j_per_k = 60.0;
-  double gear_ratio = 7.75;
-  double torque_constant_nm_per_a = 0.05;   // motor side
-  double winding_resistance_ohm = 0.173;
+  double gear_ratio = robot::kGearRatio;
+  double torque_constant_nm_per_a = robot::kMotorKt;  // motor side
+  double winding_resistance_ohm = robot::kMotorResistanceOhm;
 };
 
 // copper loss heats the winding, conduction to ambient cools it

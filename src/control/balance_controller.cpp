@@ -7,11 +7,12 @@
 
 #include "control/leg_gravity.hpp"
 #include "core/leg_kinematics.hpp"
+#include "core/robot_model.hpp"
 
 namespace cerebellum {
 namespace {
 
-constexpr double kGravity = 9.81;
+using robot::kGravityMPerS2;
 
 // world angular velocity of ZYX angles changing at rpy_rate
 Eigen::Vector3d angular_velocity_from_rpy_rate(const Eigen::Vector3d& rpy, const Eigen::Vector3d& rpy_rate) {
@@ -30,7 +31,7 @@ Eigen::Vector3d clamp_norm(const Eigen::Vector3d& v, double max_norm) {
 
 Vector6d gravity_wrench(double mass_kg) {
   Vector6d w = Vector6d::Zero();
-  w(2) = mass_kg * kGravity;
+  w(2) = mass_kg * kGravityMPerS2;
   return w;
 }
 
@@ -98,7 +99,7 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
                  config_.max_tilt_acceleration) +
       angle_integral_;
   const Eigen::Matrix3d inertia = rotation * config_.inertia_diag.asDiagonal() * rotation.transpose();
-  wrench_.head<3>() = config_.mass_kg * (acceleration + Eigen::Vector3d(0.0, 0.0, kGravity));
+  wrench_.head<3>() = config_.mass_kg * (acceleration + Eigen::Vector3d(0.0, 0.0, kGravityMPerS2));
   wrench_.tail<3>() = inertia * angular_acceleration;
 
   // share it among the loaded feet
@@ -118,7 +119,7 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
   // without position hold the joints follow the body where a push has left it
   Eigen::Vector3d body_for_legs = target.pose.position;
   if (!target.hold_position_xy) body_for_legs.head<2>() = estimated_pose_.position.head<2>();
-  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravity);
+  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravityMPerS2);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const std::size_t j = kJointsPerLeg * leg;
     const Vec3 q(state.q[j], state.q[j + 1], state.q[j + 2]);

@@ -15,21 +15,20 @@ struct PointMass {
   Eigen::Vector3d com;
 };
 
-constexpr double kRotorMassKg = 0.0567;
-constexpr double kHipRotorOffset = 0.0758;   // along the abad link, from the abad joint
-constexpr double kKneeRotorOffset = 0.0342;  // along the thigh, from the hip joint
-
 }  // namespace
 
 Eigen::Vector3d leg_gravity_torque(std::size_t leg, const Eigen::Vector3d& q, const Eigen::Vector3d& gravity_body) {
   // the published centres are for a right leg: left legs mirror y
   const double side = leg_side_sign(leg);
   const auto link = [side](double x, double y_right, double z) { return Eigen::Vector3d(x, -side * y_right, z); };
-  const PointMass abad_link{0.354, link(-0.00392, -0.015, -0.000306)};
-  const PointMass hip_rotor{kRotorMassKg, link(0.0, -kHipRotorOffset, 0.0)};
-  const PointMass thigh{0.482, link(0.00212, -0.0212, -0.0184)};
-  const PointMass knee_rotor{kRotorMassKg, {0.0, 0.0, -kKneeRotorOffset}};
-  const PointMass shank{0.116, link(-0.0006, 4.72e-5, -0.0893)};
+  const auto published = [&link](const robot::LinkMass& l) {
+    return PointMass{l.mass_kg, link(l.com_m[0], l.com_m[1], l.com_m[2])};
+  };
+  const PointMass abad_link = published(robot::kAbadLink);
+  const PointMass hip_rotor{robot::kRotorMassKg, link(0.0, -robot::kHipRotorOffsetM, 0.0)};
+  const PointMass thigh = published(robot::kThighLink);
+  const PointMass knee_rotor{robot::kRotorMassKg, {0.0, 0.0, -robot::kKneeRotorOffsetM}};
+  const PointMass shank = published(robot::kShankLink);
 
   // joint frames in the body frame
   const Eigen::Matrix3d r_abad = Eigen::AngleAxisd(q.x(), Eigen::Vector3d::UnitX()).toRotationMatrix();

@@ -1,5 +1,6 @@
 #include "core/leg_kinematics.hpp"
 
+#include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
 
@@ -12,6 +13,8 @@ namespace {
 using robot::kAbadLength;
 using robot::kShankLength;
 using robot::kThighLength;
+
+constexpr double kSingularDeterminant = 1e-9;
 
 // the sagittal-plane part of the leg before the abad rotation: x forward, z' down the leg
 struct SagittalPoint {
@@ -62,6 +65,11 @@ Mat3 foot_jacobian(std::size_t leg, const Vec3& q) {
       -s0 * lateral - c0 * s.z, -s0 * dz_dhip, -s0 * dz_dknee,
       c0 * lateral - s0 * s.z, c0 * dz_dhip, c0 * dz_dknee;
   return j;
+}
+
+Vec3 foot_force_from_torque(const Mat3& jacobian, const Vec3& tau) {
+  if (std::abs(jacobian.determinant()) <= kSingularDeterminant) return Vec3::Zero();
+  return jacobian.transpose().inverse() * tau;
 }
 
 LegIkResult inverse_kinematics_in_hip(std::size_t leg, const Vec3& p) {

@@ -25,6 +25,10 @@ Vec3 foot_position_in_body(std::size_t leg, const Vec3& q);
 // d(foot position)/dq, the same in hip and body frames
 Mat3 foot_jacobian(std::size_t leg, const Vec3& q);
 
+// the force f on the foot that joint torques tau balance in statics: tau = J^T f, f = J^-T tau;
+// zero when the leg is singular (|det J| <= 1e-9, e.g. stretched straight: no unique force)
+Vec3 foot_force_from_torque(const Mat3& jacobian, const Vec3& tau);
+
 // joint angles that put the foot at p (hip frame), on the branch a standing robot uses: foot below
 // the abad axis in the leg plane, knee bent backwards (knee < 0)
 LegIkResult inverse_kinematics_in_hip(std::size_t leg, const Vec3& p);

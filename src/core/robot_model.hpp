@@ -11,6 +11,9 @@ namespace cerebellum::robot {
 inline constexpr double kPi = 3.14159265358979323846;
 constexpr double deg(double degrees) { return degrees * kPi / 180.0; }
 
+// standard gravity (m/s^2), the figure every controller, estimator and simulated IMU uses
+inline constexpr double kGravityMPerS2 = 9.81;
+
 // geometry (m)
 inline constexpr double kHipX = 0.164;        // abad joint, body frame, +-x
 inline constexpr double kHipY = 0.042;        // abad joint, body frame, +-y
@@ -50,6 +53,19 @@ inline constexpr double kMotorResistanceOhm = 0.173;
 inline constexpr double kTotalMassKg = 8.52;  // body + legs + rotors of the MJCF model
 inline constexpr double kMpcMassKg = 8.3644;
 inline constexpr std::array<double, 3> kMpcInertiaDiag{0.07641, 0.17843, 0.197579};
+
+// leg links as published for a right leg (left legs mirror y): mass and centre of mass in the
+// link's joint frame; the rotors are point masses on the link axis
+struct LinkMass {
+  double mass_kg;
+  std::array<double, 3> com_m;
+};
+inline constexpr LinkMass kAbadLink{0.354, {-0.00392, -0.015, -0.000306}};
+inline constexpr LinkMass kThighLink{0.482, {0.00212, -0.0212, -0.0184}};
+inline constexpr LinkMass kShankLink{0.116, {-0.0006, 4.72e-5, -0.0893}};
+inline constexpr double kRotorMassKg = 0.0567;
+inline constexpr double kHipRotorOffsetM = 0.0758;   // along the abad link, from the abad joint
+inline constexpr double kKneeRotorOffsetM = 0.0342;  // along the thigh, from the hip joint
 
 // default poses per leg (abad, hip, knee), SDK convention
 inline constexpr std::array<double, 3> kStandPose{0.0, deg(45.0), deg(-70.0)};

@@ -1,9 +1,9 @@
 #include "estimation/kinematic_estimator.hpp"
 
-#include <Eigen/LU>
 #include <cmath>
 
 #include "core/leg_kinematics.hpp"
+#include "core/orientation.hpp"
 #include "core/robot_model.hpp"
 
 namespace cerebellum {
@@ -15,15 +15,6 @@ bool all_finite(const Array& values) {
     if (!std::isfinite(v)) return false;
   }
   return true;
-}
-
-Eigen::Vector3d quaternion_to_rpy(const Eigen::Quaterniond& q) {
-  // ZYX Euler angles: yaw about z, then pitch about y, then roll about x
-  const double w = q.w(), x = q.x(), y = q.y(), z = q.z();
-  const double roll = std::atan2(2.0 * (w * x + y * z), 1.0 - 2.0 * (x * x + y * y));
-  const double pitch = std::asin(std::clamp(2.0 * (w * y - z * x), -1.0, 1.0));
-  const double yaw = std::atan2(2.0 * (w * z + x * y), 1.0 - 2.0 * (y * y + z * z));
-  return {roll, pitch, yaw};
 }
 
 }  // namespace
@@ -56,11 +47,11 @@ void KinematicEstimator::update(const SensorFrame& frame, RobotState& state) {
   }
   orientation.normalize();
   state.orientation = orientation;
-  state.rpy = quaternion_to_rpy(orientation);
+  state.rpy = rpy_from_quaternion(orientation);
   const Eigen::Matrix3d body_to_world = orientation.toRotationMatrix();
   state.omega_body = Eigen::Vector3d(frame.imu_gyro[0], frame.imu_gyro[1], frame.imu_gyro[2]);
   state.omega_world = body_to_world * state.omega_body;
-  const Eigen::Vector3d gravity(0.0, 0.0, -9.81);
+  const Eigen::Vector3d gravity(0.0, 0.0, -robot::kGravityMPerS2);
   const Eigen::Vector3d specific_force(frame.imu_accel[0], frame.imu_accel[1], frame.imu_accel[2]);
   state.accel_world = body_to_world * specific_force + gravity;
   state.accel_body = body_to_world.transpose() * state.accel_world;
@@ -74,12 +65,9 @@ void KinematicEstimator::update(const SensorFrame& frame, RobotState& state) {
     const Vec3 tau(frame.tau[3 * leg], frame.tau[3 * leg + 1], frame.tau[3 * leg + 2]);
     state.foot_position_body[leg] = foot_position_in_body(leg, q);
     const Mat3 jacobian = foot_jacobian(leg, q);
-    double force_z = 0.0;
-    if (std::abs(jacobian.determinant()) > 1e-9) {
-      // statics: motor torque balances the ground's force on the foot, tau = -J^T f
-      const Vec3 ground_reaction = -(jacobian.transpose().inverse() * tau);
-      force_z = (body_to_world * ground_reaction).z();
-    }
+    // statics: motor torque balances the ground's force on the foot, tau = -J^T f (zero when singular)
+    const Vec3 ground_reaction = -foot_force_from_torque(jacobian, tau);
+    const double force_z = (body_to_world * ground_reaction).z();
     state.contact[leg] = force_z > config_.contact_force_threshold_n ? 1.0 : 0.0;
     const double foot_height = -(body_to_world * state.foot_position_body[leg]).z() + robot::kFootRadius;
     lowest_foot = std::max(lowest_foot, foot_height);

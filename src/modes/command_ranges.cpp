@@ -1,7 +1,9 @@
 #include "modes/command_ranges.hpp"
 
 #include <algorithm>
+#include <array>
 
+#include "control/locomotion/gait_table.hpp"
 #include "core/joint_layout.hpp"
 
 namespace cerebellum {
@@ -9,23 +11,18 @@ namespace cerebellum {
 double Range::clamp(double value) const { return std::clamp(value, lower, upper); }
 
 const VelocityLimits* locomotion_velocity_limits(int gait_id) {
-  static const VelocityLimits pronk{{-0.10, -0.15, -0.50}, {0.20, 0.15, 0.50}};
-  static const VelocityLimits slow_trot{{-0.60, -0.2, -1.30}, {0.60, 0.2, 1.30}};
-  static const VelocityLimits walk_dog{{-0.65, -0.4, -0.80}, {0.65, 0.4, 0.80}};
-  static const VelocityLimits bound{{-0.3, -0.3, -1.5}, {0.3, 0.3, 1.5}};
-  static const VelocityLimits medium_trot{{-1.2, -0.4, -2.25}, {1.2, 0.4, 2.25}};
-  static const VelocityLimits flying_trot{{-1.2, -0.55, -2.5}, {1.6, 0.55, 2.5}};
-  static const VelocityLimits variable_trot{{-1.2, -0.6, -2.5}, {1.6, 0.6, 2.5}};
-  switch (gait_id) {
-    case 2: return &pronk;
-    case 27: return &slow_trot;
-    case 4: return &walk_dog;
-    case 7: return &bound;
-    case 3: return &medium_trot;
-    case 10: return &flying_trot;
-    case 26: return &variable_trot;
-    default: return nullptr;
-  }
+  // the stepping gaits' limits as Eigen vectors, built once, in the order of the gait table
+  static const std::array<VelocityLimits, kGaitTable.size()> limits = [] {
+    std::array<VelocityLimits, kGaitTable.size()> all;
+    for (std::size_t i = 0; i < kGaitTable.size(); ++i) {
+      const GaitSpec& gait = kGaitTable[i];
+      all[i] = {Eigen::Vector3d(gait.velocity_min.data()), Eigen::Vector3d(gait.velocity_max.data())};
+    }
+    return all;
+  }();
+  const GaitSpec* gait = find_gait(gait_id);
+  if (gait == nullptr || !gait_steps(*gait)) return nullptr;
+  return &limits[static_cast<std::size_t>(gait - kGaitTable.data())];
 }
 
 int lifted_leg_from_contact(int contact) {

@@ -14,6 +14,9 @@ struct Range {
   double clamp(double value) const;
 };
 
+// the body height of the standing modes when a command gives none (pos_des[2] <= 0)
+inline constexpr double kDefaultBodyHeightM = 0.235;
+
 // mode 3 (QP stand): roll, pitch absolute, yaw relative; x, y offsets; height absolute
 struct QpStandRanges {
   Range roll{-0.52, 0.52};
@@ -22,7 +25,7 @@ struct QpStandRanges {
   Range offset_x{-0.05, 0.05};
   Range offset_y{-0.05, 0.05};
   Range height{0.15, 0.32};
-  double default_height_m = 0.235;  // used when pos_des[2] <= 0 (not given)
+  double default_height_m = kDefaultBodyHeightM;
 };
 
 // mode 21 (pose control): gait 0 pose about the stand pose, gait 5 absolute height
@@ -34,22 +37,22 @@ struct PoseControlRanges {
   Range offset_y{-0.06, 0.06};
   Range height{0.15, 0.27};       // gait 5, and base height + z offset of gait 0
   Range ctrl_point{-0.3, 0.3};    // each axis, body frame
-  double default_height_m = 0.235;
+  double default_height_m = kDefaultBodyHeightM;
 };
 
 // mode 11 stand gaits (1, 31): pitch and height
 struct LocomotionStandRanges {
   Range pitch{-0.25, 0.3};
   Range height{0.2, 0.28};
-  double default_height_m = 0.235;  // used when pos_des[2] <= 0 (not given)
+  double default_height_m = kDefaultBodyHeightM;
 };
 
-// mode 11 velocity limits of a gait (reference table; clamped, not rejected)
+// mode 11 velocity limits of a gait (gait table; clamped, not rejected)
 struct VelocityLimits {
   Eigen::Vector3d min;  // vx, vy (m/s), yaw rate (rad/s)
   Eigen::Vector3d max;
 };
-// nullptr for gaits without a velocity table (stand gaits, user gaits)
+// nullptr for gaits without velocity limits (stand gaits, user gaits, unknown ids)
 const VelocityLimits* locomotion_velocity_limits(int gait_id);
 inline constexpr Range kStepHeightRange{0.0, 0.06};
 

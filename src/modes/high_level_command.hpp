@@ -2,6 +2,7 @@
 // and robot_control_response of the CyberDog2 LCM interface, without the transport).
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstdint>
 
@@ -22,6 +23,42 @@ enum class ModeId : int {
   Motion = 62,
   TwoLegStand = 64,
 };
+
+// every mode of the interface, once: the transition table, is_known_mode and names read this
+struct ModeInfo {
+  ModeId id;
+  const char* name;
+};
+inline constexpr std::array<ModeInfo, 12> kAllModes{{
+    {ModeId::Off, "off"},
+    {ModeId::QpStand, "qp stand"},
+    {ModeId::PureDamper, "pure damper"},
+    {ModeId::Lifted, "lifted"},
+    {ModeId::Locomotion, "locomotion"},
+    {ModeId::RecoveryStand, "recovery stand"},
+    {ModeId::LowLevelMotor, "low-level motor"},
+    {ModeId::Jump3d, "jump 3d"},
+    {ModeId::PoseControl, "pose control"},
+    {ModeId::ForceJump, "force jump"},
+    {ModeId::Motion, "motion"},
+    {ModeId::TwoLegStand, "two-leg stand"},
+}};
+
+// the entry of a mode id, or nullptr for a number the interface does not define
+constexpr const ModeInfo* find_mode(int mode) {
+  for (const ModeInfo& info : kAllModes) {
+    if (static_cast<int>(info.id) == mode) return &info;
+  }
+  return nullptr;
+}
+
+// the largest mode id: tables indexed by mode id have kMaxModeId + 1 entries
+constexpr int max_mode_id() {
+  int largest = 0;
+  for (const ModeInfo& info : kAllModes) largest = std::max(largest, static_cast<int>(info.id));
+  return largest;
+}
+inline constexpr int kMaxModeId = max_mode_id();
 
 enum class SwitchStatus : int {
   Done = 0,

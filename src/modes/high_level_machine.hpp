@@ -72,7 +72,7 @@ class HighLevelMachine final : public OwnBehaviour {
 
   CommandQueue queue_;
   SpscRing<TimedCommand, 64> inbox_;
-  std::array<Mode*, 65> modes_{};
+  std::array<Mode*, kMaxModeId + 1> modes_{};
   Mode* current_ = nullptr;
   HighLevelCommand startup_;
   bool started_ = false;

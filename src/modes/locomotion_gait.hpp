@@ -9,6 +9,7 @@
 
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
+#include "modes/command_ranges.hpp"
 #include "modes/high_level_command.hpp"
 
 namespace cerebellum {
@@ -18,7 +19,7 @@ struct LocomotionCommand {
   int gait_id = 1;
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // vx, vy (m/s, body), yaw rate (rad/s)
   double pitch_rad = 0.0;
-  double height_m = 0.235;
+  double height_m = kDefaultBodyHeightM;
   std::array<double, 2> step_height_m{};  // front, rear
   std::int32_t value = 0;
   std::int32_t duration_ms = 0;

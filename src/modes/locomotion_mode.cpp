@@ -1,23 +1,32 @@
 #include "modes/locomotion_mode.hpp"
 
+#include <array>
+#include <string>
+
+#include "control/locomotion/gait_table.hpp"
+
 namespace cerebellum {
+namespace {
+
+// "gait N (name) not available yet" for every gait of the table, built before the loop runs
+std::array<std::string, kGaitTable.size()> unavailable_reasons() {
+  std::array<std::string, kGaitTable.size()> all;
+  for (std::size_t i = 0; i < kGaitTable.size(); ++i) {
+    all[i] = "gait " + std::to_string(kGaitTable[i].id) + " (" + kGaitTable[i].name + ") not available yet";
+  }
+  return all;
+}
+const std::array<std::string, kGaitTable.size()> kUnavailableReasons = unavailable_reasons();
+
+}  // namespace
 
 const char* unavailable_gait_reason(int gait_id) {
-  switch (gait_id) {
-    case 1: return "gait 1 (stand) not available yet";
-    case 2: return "gait 2 (pronk) not available yet";
-    case 3: return "gait 3 (medium trot) not available yet";
-    case 4: return "gait 4 (walk-dog trot) not available yet";
-    case 7: return "gait 7 (bound) not available yet";
-    case 10: return "gait 10 (flying trot) not available yet";
-    case 26: return "gait 26 (variable-frequency trot) not available yet";
-    case 27: return "gait 27 (slow trot) not available yet";
-    case 31: return "gait 31 (stand without push recovery) not available yet";
-    case 110: return "gait 110 (uploaded user gait) not available yet";
-    default:
-      if (gait_id >= 80 && gait_id <= 100) return "user gait slots 80..100 not available yet";
-      return "mode 11 has no such gait";
+  if (const GaitSpec* gait = find_gait(gait_id)) {
+    return kUnavailableReasons[static_cast<std::size_t>(gait - kGaitTable.data())].c_str();
   }
+  if (gait_id == 110) return "gait 110 (uploaded user gait) not available yet";
+  if (gait_id >= 80 && gait_id <= 100) return "user gait slots 80..100 not available yet";
+  return "mode 11 has no such gait";
 }
 
 LocomotionMode::LocomotionMode(const GaitRegistry& gaits, const LocomotionStandRanges& ranges)

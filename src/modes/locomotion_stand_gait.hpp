@@ -3,6 +3,7 @@
 // follow the command; velocity is ignored (a stand does not step).
 #pragma once
 
+#include "control/locomotion/gait_table.hpp"
 #include "control/qp_stand.hpp"
 #include "modes/locomotion_gait.hpp"
 
@@ -15,8 +16,8 @@ struct LocomotionStandConfig {
 
 class LocomotionStandGait final : public LocomotionGait {
  public:
-  static constexpr int kWithPushRecovery = 1;
-  static constexpr int kWithoutPushRecovery = 31;
+  static constexpr int kWithPushRecovery = kStandGaitId;
+  static constexpr int kWithoutPushRecovery = kStandWithoutPushRecoveryGaitId;
 
   explicit LocomotionStandGait(const LocomotionStandConfig& config = {});
   void start(const RobotState& state, const LocomotionCommand& command) override;

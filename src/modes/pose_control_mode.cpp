@@ -7,6 +7,7 @@
 #include "control/leg_gravity.hpp"
 #include "control/pose_reach.hpp"
 #include "core/leg_kinematics.hpp"
+#include "core/robot_model.hpp"
 
 namespace cerebellum {
 
@@ -120,7 +121,7 @@ void PoseControlMode::run(const RobotState& state, JointCommand& command) {
   // joints: inverse kinematics of the feet seen from the commanded body pose
   // the legs are asked for the orientation that makes the IMU read the commanded one
   const Eigen::Matrix3d rotation_des = rotation_from_rpy(trim_.update(pose.rpy, frame_.body_rpy(state), dt));
-  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -9.81);
+  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -robot::kGravityMPerS2);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const std::size_t j = kJointsPerLeg * leg;
     const LegIkResult ik = inverse_kinematics_in_body(leg, rotation_des.transpose() * (feet[leg] - pose.position));

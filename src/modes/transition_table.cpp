@@ -1,6 +1,7 @@
 #include "modes/transition_table.hpp"
 
-#include <algorithm>
+#include <cstddef>
+#include <cstdint>
 #include <initializer_list>
 
 namespace cerebellum {
@@ -8,45 +9,72 @@ namespace {
 
 using M = ModeId;
 
-bool in(ModeId to, std::initializer_list<ModeId> allowed) {
-  return std::find(allowed.begin(), allowed.end(), to) != allowed.end();
+// position of a mode in kAllModes (kAllModes.size() for an id outside it)
+constexpr std::size_t mode_index(ModeId mode) {
+  for (std::size_t i = 0; i < kAllModes.size(); ++i) {
+    if (kAllModes[i].id == mode) return i;
+  }
+  return kAllModes.size();
 }
+
+// a set of modes as bits at their positions in kAllModes
+using ModeSet = std::uint32_t;
+static_assert(kAllModes.size() <= 32, "a ModeSet holds one bit per mode");
+
+constexpr ModeSet modes(std::initializer_list<ModeId> list) {
+  ModeSet set = 0;
+  for (ModeId mode : list) set |= ModeSet{1} << mode_index(mode);
+  return set;
+}
+
+constexpr ModeSet every_mode() {
+  ModeSet set = 0;
+  for (const ModeInfo& info : kAllModes) set |= modes({info.id});
+  return set;
+}
+
+struct Row {
+  ModeId from;
+  ModeSet to;
+};
+
+// one row per mode, in the order of kAllModes
+constexpr std::array<Row, kAllModes.size()> kTable{{
+    {M::Off, modes({M::RecoveryStand, M::PoseControl, M::PureDamper, M::LowLevelMotor, M::Motion, M::Off})},
+    {M::QpStand, modes({M::Locomotion, M::PureDamper, M::PoseControl, M::RecoveryStand, M::Off, M::QpStand})},
+    {M::PureDamper, modes({M::Off, M::RecoveryStand, M::PureDamper, M::LowLevelMotor})},
+    // from Lifted: 11 and 3 only once landed, which the machine checks
+    {M::Lifted, modes({M::PureDamper, M::RecoveryStand, M::Off, M::Locomotion, M::QpStand})},
+    {M::Locomotion,
+     modes({M::RecoveryStand, M::Off, M::PureDamper, M::PoseControl, M::QpStand, M::Locomotion, M::Jump3d})},
+    {M::RecoveryStand, every_mode()},
+    {M::LowLevelMotor, modes({M::Off, M::PureDamper, M::RecoveryStand})},
+    {M::Jump3d, modes({M::RecoveryStand, M::Off, M::QpStand, M::PoseControl, M::Locomotion, M::PureDamper})},
+    {M::PoseControl, modes({M::RecoveryStand, M::Off, M::PureDamper, M::PoseControl, M::QpStand, M::Locomotion,
+                            M::Motion, M::Jump3d, M::TwoLegStand})},
+    {M::ForceJump, modes({M::PoseControl, M::PureDamper, M::QpStand, M::RecoveryStand, M::Off, M::Locomotion,
+                          M::TwoLegStand})},
+    {M::Motion, modes({M::RecoveryStand, M::Off, M::PureDamper, M::PoseControl, M::QpStand})},
+    {M::TwoLegStand, modes({M::RecoveryStand, M::Off, M::PureDamper, M::Jump3d, M::QpStand, M::PoseControl})},
+}};
+
+constexpr bool rows_follow_the_mode_list() {
+  for (std::size_t i = 0; i < kAllModes.size(); ++i) {
+    if (kTable[i].from != kAllModes[i].id) return false;
+  }
+  return true;
+}
+static_assert(rows_follow_the_mode_list(), "the transition table has one row per mode, in the order of kAllModes");
 
 }  // namespace
 
-bool is_known_mode(int mode) {
-  switch (mode) {
-    case 0: case 3: case 7: case 9: case 11: case 12: case 15: case 16: case 21: case 22: case 62: case 64:
-      return true;
-    default:
-      return false;
-  }
-}
+bool is_known_mode(int mode) { return find_mode(mode) != nullptr; }
 
 bool transition_allowed(ModeId from, ModeId to) {
-  switch (from) {
-    case M::Off: return in(to, {M::RecoveryStand, M::PoseControl, M::PureDamper, M::LowLevelMotor, M::Motion, M::Off});
-    case M::QpStand: return in(to, {M::Locomotion, M::PureDamper, M::PoseControl, M::RecoveryStand, M::Off, M::QpStand});
-    case M::PureDamper: return in(to, {M::Off, M::RecoveryStand, M::PureDamper, M::LowLevelMotor});
-    // from Lifted: 11 and 3 only once landed, which the machine checks
-    case M::Lifted: return in(to, {M::PureDamper, M::RecoveryStand, M::Off, M::Locomotion, M::QpStand});
-    case M::Locomotion:
-      return in(to, {M::RecoveryStand, M::Off, M::PureDamper, M::PoseControl, M::QpStand, M::Locomotion, M::Jump3d});
-    case M::RecoveryStand: return true;
-    case M::LowLevelMotor: return in(to, {M::Off, M::PureDamper, M::RecoveryStand});
-    case M::Jump3d:
-      return in(to, {M::RecoveryStand, M::Off, M::QpStand, M::PoseControl, M::Locomotion, M::PureDamper});
-    case M::PoseControl:
-      return in(to, {M::RecoveryStand, M::Off, M::PureDamper, M::PoseControl, M::QpStand, M::Locomotion, M::Motion,
-                     M::Jump3d, M::TwoLegStand});
-    case M::ForceJump:
-      return in(to, {M::PoseControl, M::PureDamper, M::QpStand, M::RecoveryStand, M::Off, M::Locomotion,
-                     M::TwoLegStand});
-    case M::Motion: return in(to, {M::RecoveryStand, M::Off, M::PureDamper, M::PoseControl, M::QpStand});
-    case M::TwoLegStand:
-      return in(to, {M::RecoveryStand, M::Off, M::PureDamper, M::Jump3d, M::QpStand, M::PoseControl});
-  }
-  return false;
+  const std::size_t row = mode_index(from);
+  const std::size_t column = mode_index(to);
+  if (row == kAllModes.size() || column == kAllModes.size()) return false;
+  return (kTable[row].to & (ModeSet{1} << column)) != 0;
 }
 
 }  // namespace cerebellum

@@ -5,13 +5,14 @@
 
 namespace cerebellum {
 
-LocomotionTarget locomotion_target_from(const LocomotionCommand& command, const WalkingGaitsConfig& config) {
+LocomotionTarget locomotion_target_from(const LocomotionCommand& command) {
   LocomotionTarget target;
   target.gait = *gait_pattern(command.gait_id);
   target.velocity = command.velocity;
   target.height_m = command.height_m;
   target.pitch_rad = command.pitch_rad;
-  auto step = [&](double value) { return value >= 0.01 ? value : config.locomotion.default_step_height_m; };
+  const double default_step_height_m = find_gait(command.gait_id)->default_step_height_m;
+  auto step = [&](double value) { return value >= 0.01 ? value : default_step_height_m; };
   target.step_height_front_m = step(command.step_height_m[0]);
   target.step_height_rear_m = step(command.step_height_m[1]);
   target.vertical_legs = (command.value & 0b10) != 0;
@@ -31,12 +32,12 @@ const char* WalkingGaits::check(const HighLevelCommand& command) const {
 }
 
 void WalkingGaits::start(const RobotState& state, const LocomotionCommand& command) {
-  controller_.set_command(locomotion_target_from(command, config_));
+  controller_.set_command(locomotion_target_from(command));
   controller_.reset(state);
 }
 
 void WalkingGaits::update(const LocomotionCommand& command) {
-  controller_.set_command(locomotion_target_from(command, config_));
+  controller_.set_command(locomotion_target_from(command));
 }
 
 void WalkingGaits::stop() {

@@ -1,5 +1,5 @@
-// The MPC gaits of mode 11 (27, 3, 10, 26, 4, 2, 7, and the stands 1 / 31 when reached from
-// walking): one LocomotionGait registered under every such gait id, so a gait or velocity change
+// The MPC gaits of mode 11 (the stepping gaits of the gait table, and its stands when served by
+// the MPC): one LocomotionGait registered under every such gait id, so a gait or velocity change
 // while walking updates the running controller. It feeds the gait's contact schedule to the
 // estimator and falls back to joint damping when the MPC keeps failing.
 #pragma once
@@ -18,8 +18,8 @@ struct WalkingGaitsConfig {
 };
 
 // the locomotion controller's target for a (clamped) mode-11 command; a step height below 1 cm
-// (0 = not given) means the default step height
-LocomotionTarget locomotion_target_from(const LocomotionCommand& command, const WalkingGaitsConfig& config);
+// (0 = not given) means the gait's default step height (gait table)
+LocomotionTarget locomotion_target_from(const LocomotionCommand& command);
 
 class WalkingGaits final : public LocomotionGait {
  public:

@@ -14,20 +14,7 @@ std::string format(const char* pattern, double a, double b, double c) {
 }  // namespace
 
 std::string mode_name(int mode) {
-  switch (static_cast<ModeId>(mode)) {
-    case ModeId::Off: return "off";
-    case ModeId::QpStand: return "qp stand";
-    case ModeId::PureDamper: return "pure damper";
-    case ModeId::Lifted: return "lifted";
-    case ModeId::Locomotion: return "locomotion";
-    case ModeId::RecoveryStand: return "recovery stand";
-    case ModeId::LowLevelMotor: return "low-level motor";
-    case ModeId::Jump3d: return "jump 3d";
-    case ModeId::PoseControl: return "pose control";
-    case ModeId::ForceJump: return "force jump";
-    case ModeId::Motion: return "motion";
-    case ModeId::TwoLegStand: return "two-leg stand";
-  }
+  if (const ModeInfo* info = find_mode(mode)) return info->name;
   return "mode " + std::to_string(mode);
 }
 

@@ -3,6 +3,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/LU>
 #include <random>
 
 #include "core/robot_model.hpp"
@@ -105,6 +106,35 @@ TEST(LegKinematics, UnreachableTargetIsReportedAndClampedToTheStretchedLeg) {
   EXPECT_FALSE(ik.reachable);
   EXPECT_NEAR(ik.q[2], 0.0, 1e-9);  // fully stretched
   EXPECT_NEAR(foot_position_in_hip(0, ik.q).z(), -(robot::kThighLength + robot::kShankLength), 1e-9);
+}
+
+TEST(FootForce, BalancesTheJointTorquesByVirtualWork) {
+  // tau = J^T f, and the work f . dp of a small joint motion dq equals tau . dq, with dp taken
+  // from forward kinematics (central difference), not from the Jacobian
+  std::mt19937 rng(17);
+  std::uniform_real_distribution<double> torque(-12.0, 12.0);
+  std::uniform_real_distribution<double> unit(-1.0, 1.0);
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    for (int trial = 0; trial < 200; ++trial) {
+      const Vec3 q = random_joint_angles(rng, leg);
+      const Vec3 tau(torque(rng), torque(rng), torque(rng));
+      const Mat3 jacobian = foot_jacobian(leg, q);
+      if (std::abs(jacobian.determinant()) < 1e-4) continue;  // too close to singular to compare
+      const Vec3 force = foot_force_from_torque(jacobian, tau);
+      EXPECT_LT((jacobian.transpose() * force - tau).norm(), 1e-9 * (1.0 + tau.norm()));
+      const Vec3 dq(unit(rng), unit(rng), unit(rng));
+      const double h = 1e-6;
+      const Vec3 dp = (foot_position_in_hip(leg, q + h * dq) - foot_position_in_hip(leg, q - h * dq)) / (2.0 * h);
+      EXPECT_NEAR(force.dot(dp), tau.dot(dq), 1e-6 * (1.0 + force.norm())) << q.transpose();
+    }
+  }
+}
+
+TEST(FootForce, IsZeroForAStretchedLegWhoseJacobianIsSingular) {
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const Vec3 stretched(0.2, 0.4, 0.0);  // knee straight: hip and knee move the foot along one line
+    EXPECT_EQ(foot_force_from_torque(foot_jacobian(leg, stretched), Vec3(1.0, 2.0, 3.0)), Vec3::Zero());
+  }
 }
 
 }  // namespace

@@ -9,8 +9,6 @@
 namespace cerebellum {
 namespace {
 
-const std::vector<int> kModes = {0, 3, 7, 9, 11, 12, 15, 16, 21, 22, 62, 64};
-
 // the reference table, written out as data
 const std::map<int, std::set<int>> kAllowed = {
     {0, {12, 21, 7, 15, 62, 0}},       {3, {11, 7, 21, 12, 0, 3}},
@@ -23,8 +21,8 @@ const std::map<int, std::set<int>> kAllowed = {
 
 TEST(TransitionTable, EveryPairMatchesTheReferenceTable) {
   int legal = 0;
-  for (int from : kModes) {
-    for (int to : kModes) {
+  for (const auto& [from, unused_row] : kAllowed) {
+    for (const auto& [to, unused_column] : kAllowed) {
       const bool expected = kAllowed.at(from).count(to) > 0;
       EXPECT_EQ(transition_allowed(static_cast<ModeId>(from), static_cast<ModeId>(to)), expected)
           << from << " -> " << to;
@@ -38,6 +36,18 @@ TEST(TransitionTable, KnownModesAreExactlyTheTablesRows) {
   for (int m = -5; m < 130; ++m) {
     EXPECT_EQ(is_known_mode(m), kAllowed.count(m) > 0) << m;
   }
+}
+
+TEST(TransitionTable, TheModeListHoldsExactlyTheTablesRowsEachOnce) {
+  std::set<int> listed;
+  for (const ModeInfo& info : kAllModes) {
+    EXPECT_TRUE(listed.insert(static_cast<int>(info.id)).second) << static_cast<int>(info.id);
+    EXPECT_EQ(find_mode(static_cast<int>(info.id)), &info);
+  }
+  std::set<int> reference;
+  for (const auto& [mode, unused] : kAllowed) reference.insert(mode);
+  EXPECT_EQ(listed, reference);
+  EXPECT_EQ(kMaxModeId, *reference.rbegin());
 }
 
 }  // namespace

@@ -12,6 +12,7 @@
 #include "control/qp/qp_solution.hpp"
 #include "control/qp/qp_solver.hpp"
 #include "core/joint_layout.hpp"
+#include "core/robot_model.hpp"
 
 namespace cerebellum {
 
@@ -20,8 +21,8 @@ inline constexpr int kSrbStates = 13;
 
 struct ConvexMpcConfig {
   double dt_s = 0.03;  // one MPC step = one gait segment
-  double mass_kg = 8.3644;
-  Eigen::Vector3d inertia_diag{0.07641, 0.17843, 0.197579};
+  double mass_kg = robot::kMpcMassKg;
+  Eigen::Vector3d inertia_diag{robot::kMpcInertiaDiag[0], robot::kMpcInertiaDiag[1], robot::kMpcInertiaDiag[2]};
   // state weights: roll, pitch, yaw, x, y, z, wx, wy, wz, vx, vy, vz
   std::array<double, 12> state_weights{1.0, 0.25, 10, 2, 2, 50, 0, 0, 0.3, 0.2, 0.2, 0.1};
   double force_weight = 4e-5;
@@ -31,7 +32,7 @@ struct ConvexMpcConfig {
 
 // what the MPC needs each solve
 struct MpcInput {
-  Eigen::Matrix<double, kSrbStates, 1> x0;  // current state (g entry = -9.81)
+  Eigen::Matrix<double, kSrbStates, 1> x0;  // current state (g entry = -robot::kGravityMPerS2)
   // reference trajectory, one state per horizon step (k = 1..horizon)
   std::array<Eigen::Matrix<double, kSrbStates, 1>, kMpcHorizon> x_ref;
   // foot positions relative to the COM now, world frame (a foot in the air: where it will land)

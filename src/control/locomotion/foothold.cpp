@@ -3,6 +3,8 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 
+#include "core/robot_model.hpp"
+
 namespace cerebellum {
 
 Eigen::Vector3d raibert_foothold(const Eigen::Vector3d& hip_world, const Eigen::Vector3d& velocity,
@@ -16,7 +18,7 @@ Eigen::Vector3d raibert_foothold(const Eigen::Vector3d& hip_world, const Eigen::
   }
   // centrifugal term: the foot goes outwards by half the pendulum offset (h / g) a that carries the
   // centripetal acceleration a = v x omega_des through the stance
-  const double centrifugal = 0.5 * std::max(body_height_m, 0.0) / 9.81;
+  const double centrifugal = 0.5 * std::max(body_height_m, 0.0) / robot::kGravityMPerS2;
   offset.x() += centrifugal * (velocity.y() * yaw_rate_desired);
   offset.y() += centrifugal * (-velocity.x() * yaw_rate_desired);
   // clamp in the heading frame

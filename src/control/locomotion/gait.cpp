@@ -6,37 +6,30 @@
 namespace cerebellum {
 namespace {
 
-GaitPattern make(int id, int period, std::array<int, 4> offsets, int stance, std::array<double, 3> vmin,
+GaitPattern make(int id, GaitCycle cycle, std::array<int, 4> offsets, std::array<double, 3> vmin,
                  std::array<double, 3> vmax) {
   GaitPattern p;
   p.id = id;
-  p.period_segments = period;
+  p.period_segments = cycle.period_segments;
   p.offsets = offsets;
-  p.stance = {stance, stance, stance, stance};
+  p.stance = {cycle.stance_segments, cycle.stance_segments, cycle.stance_segments, cycle.stance_segments};
   p.velocity_min = vmin;
   p.velocity_max = vmax;
   return p;
 }
 
-// the variable-frequency trot's steps: (period, stance) as speed grows
-constexpr std::array<std::array<int, 2>, 8> kVariableTrotSteps{
-    {{24, 16}, {22, 14}, {20, 12}, {18, 11}, {16, 10}, {14, 8}, {12, 6}, {10, 5}}};
+GaitPattern pattern_of(const GaitSpec& gait) {
+  GaitPattern p = make(gait.id, gait.cycle, gait.offsets, gait.velocity_min, gait.velocity_max);
+  p.adapts_frequency = gait.kind == GaitKind::FrequencyAdapting;
+  return p;
+}
 
 }  // namespace
 
 std::optional<GaitPattern> gait_pattern(int gait_id) {
-  switch (gait_id) {
-    case 1:
-    case 31: return make(gait_id, 10, {0, 0, 0, 0}, 10, {0, 0, 0}, {0, 0, 0});
-    case 2: return make(2, 10, {0, 0, 0, 0}, 4, {-0.10, -0.15, -0.50}, {0.20, 0.15, 0.50});
-    case 3: return make(3, 12, {0, 6, 6, 0}, 6, {-1.2, -0.4, -2.25}, {1.2, 0.4, 2.25});
-    case 4: return make(4, 12, {0, 6, 6, 0}, 6, {-0.65, -0.4, -0.80}, {0.65, 0.4, 0.80});
-    case 7: return make(7, 12, {6, 6, 0, 0}, 8, {-0.3, -0.3, -1.5}, {0.3, 0.3, 1.5});
-    case 10: return make(10, 10, {0, 5, 5, 0}, 4, {-1.2, -0.55, -2.5}, {1.6, 0.55, 2.5});
-    case 26: return variable_trot_pattern(0.0);
-    case 27: return make(27, 20, {0, 10, 10, 0}, 12, {-0.60, -0.2, -1.30}, {0.60, 0.2, 1.30});
-    default: return std::nullopt;
-  }
+  const GaitSpec* gait = find_gait(gait_id);
+  if (gait == nullptr) return std::nullopt;
+  return pattern_of(*gait);
 }
 
 bool legs_swing_together(const GaitPattern& pattern) {
@@ -47,12 +40,14 @@ bool legs_swing_together(const GaitPattern& pattern) {
 }
 
 GaitPattern variable_trot_pattern(double speed_m_s) {
-  // one step per 0.2 m/s of speed
-  const int step = std::clamp(static_cast<int>(std::floor(std::abs(speed_m_s) / 0.2)), 0,
-                              static_cast<int>(kVariableTrotSteps.size()) - 1);
-  const auto [period, stance] = kVariableTrotSteps[static_cast<std::size_t>(step)];
-  GaitPattern p = make(26, period, {0, period / 2, period / 2, 0}, stance, {-1.2, -0.6, -2.5}, {1.6, 0.6, 2.5});
-  p.adapts_frequency = true;
+  const int step = std::clamp(static_cast<int>(std::floor(std::abs(speed_m_s) / kVariableTrotSpeedPerCycleMPerS)), 0,
+                              static_cast<int>(kVariableTrotCycles.size()) - 1);
+  const GaitCycle cycle = kVariableTrotCycles[static_cast<std::size_t>(step)];
+  const int half = cycle.period_segments / 2;
+  GaitPattern p = pattern_of(*find_gait(kVariableTrotGaitId));
+  p.period_segments = cycle.period_segments;
+  p.offsets = {0, half, half, 0};
+  p.stance.fill(cycle.stance_segments);
   return p;
 }
 
@@ -65,10 +60,10 @@ bool steps(const GaitPattern& pattern) {
 
 GaitPattern stand_bridge_pattern(int segments) {
   const int period = std::max(segments, 1);
-  return make(1, period, {0, 0, 0, 0}, period, {0, 0, 0}, {0, 0, 0});
+  return make(kStandGaitId, {period, period}, {0, 0, 0, 0}, {0, 0, 0}, {0, 0, 0});
 }
 
-GaitScheduler::GaitScheduler(double segment_s) : segment_s_(segment_s), pattern_(*gait_pattern(1)) {}
+GaitScheduler::GaitScheduler(double segment_s) : segment_s_(segment_s), pattern_(*gait_pattern(kStandGaitId)) {}
 
 double GaitScheduler::cycle_phase() const {
   return (segment_ + time_in_segment_s_ / segment_s_) / pattern_.period_segments;

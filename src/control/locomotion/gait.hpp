@@ -5,6 +5,7 @@
 #include <array>
 #include <optional>
 
+#include "control/locomotion/gait_table.hpp"
 #include "core/joint_layout.hpp"
 
 namespace cerebellum {
@@ -17,10 +18,10 @@ struct GaitPattern {
   // velocity limits (vx, vy, yaw rate), clamped, not rejected
   std::array<double, 3> velocity_min{};
   std::array<double, 3> velocity_max{};
-  bool adapts_frequency = false;         // 26: the period follows the commanded speed
+  bool adapts_frequency = false;         // GaitKind::FrequencyAdapting: the period follows the speed
 };
 
-// the pattern of a gait id of the reference table, or nothing for an unknown id
+// the pattern of a gait id of the gait table, or nothing for an unknown id
 std::optional<GaitPattern> gait_pattern(int gait_id);
 
 // true for a hop (pronk): every leg lifts and lands together

@@ -40,9 +40,9 @@ LocomotionController::LocomotionController(const LocomotionConfig& config, std::
       worker_(mpc_),
       scheduler_(config.tick_s * config.ticks_per_segment),
       ground_(config.ground) {
-  target_.gait = *gait_pattern(1);
+  target_.gait = *gait_pattern(kStandGaitId);
   target_.height_m = config.default_height_m;
-  target_.step_height_front_m = target_.step_height_rear_m = config.default_step_height_m;
+  target_.step_height_front_m = target_.step_height_rear_m = find_gait(kStandGaitId)->default_step_height_m;
 }
 
 void LocomotionController::reset(const RobotState& state) {
@@ -62,7 +62,7 @@ void LocomotionController::reset(const RobotState& state) {
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) feet[leg] = foot_on_ground_world(state, leg);
   ground_.reset(feet);
   // until the first solution: share the weight evenly
-  const double share = config_.mpc.mass_kg * 9.81 / kNumLegs;
+  const double share = config_.mpc.mass_kg * robot::kGravityMPerS2 / kNumLegs;
   for (auto& f : forces_) f = Eigen::Vector3d(0.0, 0.0, share);
   MpcOutput stale;
   worker_.take(stale);
@@ -135,7 +135,7 @@ void LocomotionController::update_ground(const RobotState& state) {
 void LocomotionController::post_mpc(const RobotState& state) {
   const double dt = config_.mpc.dt_s;
   MpcInput& in = mpc_input_;
-  in.x0 << state.rpy, state.position_world, state.omega_world, state.velocity_world, -9.81;
+  in.x0 << state.rpy, state.position_world, state.omega_world, state.velocity_world, -robot::kGravityMPerS2;
   // yaw without wrap: the reference continues from the current yaw
   const double yaw = state.rpy.z();
   const double yaw_offset = std::clamp(wrap_angle(yaw_des_ - yaw), -0.2, 0.2);
@@ -152,7 +152,7 @@ void LocomotionController::post_mpc(const RobotState& state) {
     auto& x = in.x_ref[k];
     const double ground_z = ground_.plane().height_at(position.x(), position.y());
     x << roll_ref, pitch_ref, yaw_k, position.x(), position.y(), ground_z + target_.height_m + height_correction_m_,
-        0.0, 0.0, velocity_.z(), velocity_world.x(), velocity_world.y(), 0.0, -9.81;
+        0.0, 0.0, velocity_.z(), velocity_world.x(), velocity_world.y(), 0.0, -robot::kGravityMPerS2;
   }
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
   const Eigen::Vector3d com_world = state.position_world + body_to_world * config_.com_offset_body;

@@ -10,6 +10,7 @@
 #include "control/locomotion/foothold.hpp"
 #include "control/locomotion/gait.hpp"
 #include "control/locomotion/mpc_worker.hpp"
+#include "core/robot_model.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "estimation/ground_plane.hpp"
@@ -22,7 +23,6 @@ struct LocomotionConfig {
   ConvexMpcConfig mpc;
   FootholdConfig foothold;
   double default_height_m = 0.25;
-  double default_step_height_m = 0.06;
   double hop_step_height_fraction = 0.3;  // pronk: share of the step height the feet are lifted
   double swing_kp = 40.0;  // joint gains tracking the swing trajectory (motor PD at 1 kHz)
   double swing_kd = 1.0;
@@ -48,7 +48,7 @@ struct LocomotionConfig {
   // |v| |yaw rate| above this (m/s^2) is clamped by lowering the yaw rate: friction 0.4 allows at
   // most 3.9 m/s^2 with no margin for the gait's own forces; 2.5 still fell in the soak
   double max_centripetal_accel_m_s2 = 2.0;
-  double vertical_leg_half_width_m = 0.136;  // value bit1 = 1: feet under the hips
+  double vertical_leg_half_width_m = robot::kHipY + robot::kAbadLength;  // value bit1 = 1: feet under the hips
   double pigeon_toe_half_width_m = 0.11;     // value bit1 = 0: energy-saving narrower stance
   Eigen::Vector3d com_offset_body{0.013, 0.0, 0.0};
   // ground plane for footholds, height and attitude references: feet count from this far into stance
@@ -62,8 +62,8 @@ struct LocomotionTarget {
   Eigen::Vector3d velocity{0, 0, 0};  // vx, vy (body frame, m/s), yaw rate (rad/s); clamped to the gait
   double height_m = 0.25;
   double pitch_rad = 0.0;
-  double step_height_front_m = 0.06;
-  double step_height_rear_m = 0.06;
+  double step_height_front_m = kDefaultStepHeightM;
+  double step_height_rear_m = kDefaultStepHeightM;
   bool vertical_legs = false;
 };
 

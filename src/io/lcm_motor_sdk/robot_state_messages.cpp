@@ -1,6 +1,5 @@
 #include "io/lcm_motor_sdk/robot_state_messages.hpp"
 
-#include <Eigen/LU>
 #include <cmath>
 
 #include "core/leg_kinematics.hpp"
@@ -9,16 +8,8 @@
 namespace cerebellum {
 namespace {
 
-constexpr double kSingularDeterminant = 1e-9;
-
 Vec3 leg_slice(const JointArray<double>& values, std::size_t leg) {
   return {values[joint_index(leg, 0)], values[joint_index(leg, 1)], values[joint_index(leg, 2)]};
-}
-
-// the foot force that joint torques tau balance: tau = J^T f
-Vec3 foot_force(const Mat3& jacobian, const Vec3& tau) {
-  if (std::abs(jacobian.determinant()) <= kSingularDeterminant) return Vec3::Zero();
-  return jacobian.transpose().partialPivLu().solve(tau);
 }
 
 }  // namespace
@@ -60,8 +51,8 @@ leg_control_data_lcmt make_leg_control_data(const RobotState& state, const Joint
     const Mat3 jacobian = foot_jacobian(leg, q_leg);
     put_vector3(&message.p[3 * leg], foot_position_in_hip(leg, q_leg));
     put_vector3(&message.v[3 * leg], jacobian * leg_slice(state.qd, leg));
-    put_vector3(&message.force_est[3 * leg], foot_force(jacobian, leg_slice(state.tau, leg)));
-    put_vector3(&message.force_desired[3 * leg], foot_force(jacobian, leg_slice(command.tau_ff, leg)));
+    put_vector3(&message.force_est[3 * leg], foot_force_from_torque(jacobian, leg_slice(state.tau, leg)));
+    put_vector3(&message.force_desired[3 * leg], foot_force_from_torque(jacobian, leg_slice(command.tau_ff, leg)));
   }
   return message;
 }

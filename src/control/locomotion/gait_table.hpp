@@ -1,0 +1,86 @@
+// Every gait of mode 11, once: the firmware's reference table (contact pattern and velocity
+// limits) plus what this MC adds (name, kind, default step height). The contact schedules, the
+// command clamps, the MC's assembly and `cerebellum cmd` all read it.
+#pragma once
+
+#include <array>
+
+#include "core/joint_layout.hpp"
+
+namespace cerebellum {
+
+enum class GaitKind {
+  Stand,              // all feet stay down (served by the stand or by the MPC with all-stance)
+  Walking,            // a fixed cycle on the walking controller
+  FrequencyAdapting,  // the walking controller picks the cycle from the commanded speed
+};
+
+// a walking cycle in 30 ms MPC segments
+struct GaitCycle {
+  int period_segments;
+  int stance_segments;  // every leg's stance length
+};
+
+// the swing height when a command gives none (a step height below 1 cm)
+inline constexpr double kDefaultStepHeightM = 0.06;
+
+// gait ids other code names: the stand that pulls the body back over its feet after a push (also
+// the controller's resting gait), the stand that only damps a push, the frequency-adapting trot
+inline constexpr int kStandGaitId = 1;
+inline constexpr int kStandWithoutPushRecoveryGaitId = 31;
+inline constexpr int kVariableTrotGaitId = 26;
+
+struct GaitSpec {
+  int id;
+  const char* name;
+  GaitKind kind;
+  GaitCycle cycle;                        // for a frequency-adapting gait: the cycle at rest
+  std::array<int, kNumLegs> offsets;      // segment in which stance starts (FR, FL, RR, RL)
+  // velocity limits (vx, vy m/s; yaw rate rad/s), clamped, not rejected; zero for stands
+  std::array<double, 3> velocity_min;
+  std::array<double, 3> velocity_max;
+  double default_step_height_m;
+};
+
+inline constexpr std::array<GaitSpec, 9> kGaitTable{{
+    {kStandGaitId, "stand", GaitKind::Stand, {10, 10}, {0, 0, 0, 0}, {0, 0, 0}, {0, 0, 0}, kDefaultStepHeightM},
+    {2, "pronk", GaitKind::Walking, {10, 4}, {0, 0, 0, 0}, {-0.10, -0.15, -0.50}, {0.20, 0.15, 0.50},
+     kDefaultStepHeightM},
+    {3, "medium trot", GaitKind::Walking, {12, 6}, {0, 6, 6, 0}, {-1.2, -0.4, -2.25}, {1.2, 0.4, 2.25},
+     kDefaultStepHeightM},
+    {4, "walk-dog trot", GaitKind::Walking, {12, 6}, {0, 6, 6, 0}, {-0.65, -0.4, -0.80}, {0.65, 0.4, 0.80},
+     kDefaultStepHeightM},
+    {7, "bound", GaitKind::Walking, {12, 8}, {6, 6, 0, 0}, {-0.3, -0.3, -1.5}, {0.3, 0.3, 1.5}, kDefaultStepHeightM},
+    {10, "flying trot", GaitKind::Walking, {10, 4}, {0, 5, 5, 0}, {-1.2, -0.55, -2.5}, {1.6, 0.55, 2.5},
+     kDefaultStepHeightM},
+    {kVariableTrotGaitId, "variable-frequency trot", GaitKind::FrequencyAdapting, {24, 16}, {0, 12, 12, 0}, {-1.2, -0.6, -2.5},
+     {1.6, 0.6, 2.5}, kDefaultStepHeightM},
+    {27, "slow trot", GaitKind::Walking, {20, 12}, {0, 10, 10, 0}, {-0.60, -0.2, -1.30}, {0.60, 0.2, 1.30},
+     kDefaultStepHeightM},
+    {kStandWithoutPushRecoveryGaitId, "stand without push recovery", GaitKind::Stand, {10, 10}, {0, 0, 0, 0}, {0, 0, 0}, {0, 0, 0},
+     kDefaultStepHeightM},
+}};
+
+// the variable-frequency trot (26): its cycles as the commanded speed grows, one step per 0.2 m/s;
+// a trot (diagonal pairs half a cycle apart) on each
+inline constexpr double kVariableTrotSpeedPerCycleMPerS = 0.2;
+inline constexpr std::array<GaitCycle, 8> kVariableTrotCycles{
+    {{24, 16}, {22, 14}, {20, 12}, {18, 11}, {16, 10}, {14, 8}, {12, 6}, {10, 5}}};
+
+// the table's entry of a gait id, or nullptr for an id mode 11 does not know
+constexpr const GaitSpec* find_gait(int gait_id) {
+  for (const GaitSpec& gait : kGaitTable) {
+    if (gait.id == gait_id) return &gait;
+  }
+  return nullptr;
+}
+
+// the variable trot's entry is its cycle at rest, as a trot
+static_assert(find_gait(kVariableTrotGaitId)->cycle.period_segments == kVariableTrotCycles[0].period_segments &&
+              find_gait(kVariableTrotGaitId)->cycle.stance_segments == kVariableTrotCycles[0].stance_segments &&
+              find_gait(kVariableTrotGaitId)->offsets[1] == kVariableTrotCycles[0].period_segments / 2);
+
+// true for the gaits that step (walking and frequency-adapting), false for stands
+constexpr bool gait_steps(const GaitSpec& gait) { return gait.kind != GaitKind::Stand; }
+
+}  // namespace cerebellum
