@@ -13,8 +13,8 @@
 #include <string>
 #include <thread>
 
-#include "app/control_loop.hpp"
 #include "core/spsc_ring.hpp"
+#include "cycle/cycle_observer.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_highlevel/response_schedule.hpp"
 #include "io/lcm_highlevel/user_gait_store.hpp"

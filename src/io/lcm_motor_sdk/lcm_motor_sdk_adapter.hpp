@@ -11,8 +11,8 @@
 #include <string>
 #include <thread>
 
-#include "app/control_loop.hpp"
 #include "core/spsc_ring.hpp"
+#include "cycle/cycle_observer.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
 #include "modes/motor_sdk/motor_sdk_source.hpp"
 
