@@ -44,6 +44,8 @@ class ModeSet {
   const RecoveryStandMode& recovery_stand() const { return recovery_stand_; }
   const WalkingGaits& walking() const { return walking_; }
   const LocomotionStandGait& qp_stand_gait() const { return qp_stand_gait_; }
+  // mode 11's gaits by id
+  const GaitRegistry& gaits() const { return gaits_; }
 
  private:
   OffMode off_;
