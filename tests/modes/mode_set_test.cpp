@@ -33,7 +33,9 @@ TEST(ModeSet, OtherGaitIdsHaveNoController) {
     bool listed = false;
     for (int walking : kWalkingGaitIds) listed |= walking == id;
     for (int stand : kStandGaitIds) listed |= stand == id;
-    if (!listed) EXPECT_EQ(modes.gaits().find(id), nullptr) << id;
+    if (!listed) {
+      EXPECT_EQ(modes.gaits().find(id), nullptr) << id;
+    }
   }
 }
 
