@@ -10,7 +10,7 @@
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
-#include "modes/mode_set.hpp"
+#include "modes/locomotion_stand.hpp"
 #include "safety/command_guard.hpp"
 
 namespace cerebellum {

@@ -6,6 +6,7 @@
 #include "estimation/body_state_estimator.hpp"
 #include "modes/high_level_machine.hpp"
 #include "modes/lifted_mode.hpp"
+#include "modes/locomotion_stand.hpp"
 #include "modes/locomotion_mode.hpp"
 #include "modes/locomotion_stand_gait.hpp"
 #include "modes/passive_modes.hpp"
@@ -15,14 +16,6 @@
 #include "modes/walking_gaits.hpp"
 
 namespace cerebellum {
-
-// what serves mode 11's stand gaits 1 and 31
-enum class LocomotionStand {
-  Mpc,  // the walking controller with an all-stance schedule: a stand asked for while walking
-        // first brings the body to rest by stepping
-  Qp,   // the force-based QP stand of mode 3: gait 1 pulls the body back over its feet after a
-        // push, 31 only damps it; a stand asked for while walking stops the legs at once
-};
 
 struct ModeSetConfig {
   double loop_period_s = 0.002;
