@@ -12,9 +12,9 @@
 #include <string>
 #include <thread>
 
-#include "app/control_loop.hpp"
 #include "backend/simulation.hpp"
 #include "core/spsc_ring.hpp"
+#include "cycle/cycle_observer.hpp"
 #include "modes/high_level_machine.hpp"
 
 namespace cerebellum {

@@ -15,8 +15,8 @@
 #include <string>
 #include <thread>
 
-#include "app/control_loop.hpp"
 #include "app/viewer_snapshot.hpp"
+#include "cycle/cycle_observer.hpp"
 
 namespace cerebellum {
 

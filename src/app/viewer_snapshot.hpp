@@ -3,8 +3,8 @@
 
 #include <array>
 
-#include "app/control_loop.hpp"
 #include "backend/simulation.hpp"
+#include "cycle/cycle_record.hpp"
 #include "modes/high_level_machine.hpp"
 #include "viz/sim_snapshot.hpp"
 
