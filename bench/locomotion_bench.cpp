@@ -19,6 +19,7 @@
 
 #include "app/lockstep_client.hpp"
 #include "core/orientation.hpp"
+#include "app/simulated_robot.hpp"
 
 namespace {
 
@@ -60,7 +61,7 @@ double& robot_seconds_total() {
 
 // one robot, stood up by recovery stand, then driven
 struct Run {
-  explicit Run(const std::string& model = "cyberdog2.xml") : mc(config_for(model)), client(mc) {
+  explicit Run(const std::string& model = "cyberdog2.xml") : mc(make_simulated_mc(config_for(model))), client(mc) {
     client.run(high_level_command(ModeId::RecoveryStand, 0), kStandS);
   }
   ~Run() { robot_seconds_total() += mc.backend().time_s(); }
@@ -80,11 +81,11 @@ Tracking track(Run& run, int gait, const Eigen::Vector3d& command, double settle
                std::ofstream& csv, const std::string& label) {
   Tracking t;
   int samples = 0;
-  double last_yaw = yaw_of(run.mc.backend().ground_truth());
+  double last_yaw = yaw_of(run.mc.simulation().ground_truth());
   const double start = run.mc.backend().time_s();
   run.client.run(high_level_command(ModeId::Locomotion, gait, command.x(), command.y(), command.z()),
                  settle_s + measure_s, [&](const CycleRecord& record) {
-                   const GroundTruth g = run.mc.backend().ground_truth();
+                   const GroundTruth g = run.mc.simulation().ground_truth();
                    const double yaw = yaw_of(g);
                    const double yaw_rate = std::remainder(yaw - last_yaw, 2 * M_PI) / 0.002;
                    last_yaw = yaw;
@@ -130,10 +131,10 @@ Row tracking_row(const std::string& name, int gait, const Eigen::Vector3d& comma
 
 Row odometry_row(std::ofstream& csv) {
   Run run;
-  const GroundTruth g0 = run.mc.backend().ground_truth();
+  const GroundTruth g0 = run.mc.simulation().ground_truth();
   const Eigen::Vector3d p0 = run.mc.loop().last_cycle().state.position_world;
   track(run, 3, {0.8, 0.0, 0.0}, 0.0, 13.0, csv, "odometry 0.8 m/s");
-  const GroundTruth g1 = run.mc.backend().ground_truth();
+  const GroundTruth g1 = run.mc.simulation().ground_truth();
   const Eigen::Vector3d p1 = run.mc.loop().last_cycle().state.position_world;
   const Eigen::Vector2d truth(g1.position[0] - g0.position[0], g1.position[1] - g0.position[1]);
   const Eigen::Vector2d estimate = (p1 - p0).head<2>();
@@ -146,13 +147,13 @@ Row push_row(double impulse_n_s) {
   Run run;
   bool up = true;
   run.client.run(high_level_command(ModeId::Locomotion, 3), 2.0);
-  run.mc.backend().set_external_force({0.0, impulse_n_s / 0.1, 0.0});  // for 0.1 s, sideways
+  run.mc.simulation().set_external_force({0.0, impulse_n_s / 0.1, 0.0});  // for 0.1 s, sideways
   run.client.run(high_level_command(ModeId::Locomotion, 3), 0.1,
-                 [&](const CycleRecord&) { up &= upright(run.mc.backend().ground_truth()); });
-  run.mc.backend().set_external_force({0.0, 0.0, 0.0});
+                 [&](const CycleRecord&) { up &= upright(run.mc.simulation().ground_truth()); });
+  run.mc.simulation().set_external_force({0.0, 0.0, 0.0});
   run.client.run(high_level_command(ModeId::Locomotion, 3), 3.0,
-                 [&](const CycleRecord&) { up &= upright(run.mc.backend().ground_truth()); });
-  const auto v = run.mc.backend().ground_truth().velocity_world;
+                 [&](const CycleRecord&) { up &= upright(run.mc.simulation().ground_truth()); });
+  const auto v = run.mc.simulation().ground_truth().velocity_world;
   const bool settled = std::hypot(v[0], v[1]) < 0.2;
   return {fmt("lateral push %.0f N s while trotting in place", impulse_n_s), fmt("%.0f N x 0.1 s", impulse_n_s * 10),
           up ? "stayed up" : "fell",
@@ -163,14 +164,14 @@ Row terrain_row(const std::string& name, const std::string& model, double climb_
   Run run(model);
   bool up = true;
   run.client.run(high_level_command(ModeId::Locomotion, 27, 0.4), 14.0, [&](const CycleRecord& record) {
-    up &= upright(run.mc.backend().ground_truth());
+    up &= upright(run.mc.simulation().ground_truth());
     if (std::getenv("TERRAIN_LOG") && record.tick % 250 == 0) {
-      const GroundTruth g = run.mc.backend().ground_truth();
+      const GroundTruth g = run.mc.simulation().ground_truth();
       std::fprintf(stderr, "%s t=%.1f x=%.2f z=%.3f est_h=%.3f\n", name.c_str(), record.state.time_s, g.position[0],
                    g.position[2], record.state.height_m);
     }
   });
-  const GroundTruth g = run.mc.backend().ground_truth();
+  const GroundTruth g = run.mc.simulation().ground_truth();
   const bool climbed = g.position[2] > climb_m + 0.2;
   return {name, "0.4 m/s, gait 27", fmt("x %.2f m", g.position[0]), fmt("z %.3f m", g.position[2]),
           "climbs without falling", up && climbed};
@@ -198,7 +199,7 @@ Row soak_row(double minutes, unsigned seed) {
     ++commands;
     bool up = true;
     run.client.run(high_level_command(ModeId::Locomotion, gait, v.x(), v.y(), v.z()), hold(rng),
-                   [&](const CycleRecord&) { up &= upright(run.mc.backend().ground_truth()); });
+                   [&](const CycleRecord&) { up &= upright(run.mc.simulation().ground_truth()); });
     const HighLevelStatus& status = run.mc.machine().status();
     const bool walking = status.mode == static_cast<int>(ModeId::Locomotion) && status.gait_id == gait;
     if (up && walking) continue;
@@ -206,7 +207,7 @@ Row soak_row(double minutes, unsigned seed) {
     std::fprintf(stderr, "soak: %s at %.1f s after gait %d v (%.2f, %.2f, %.2f)\n", up ? "stop" : "fall",
                  run.mc.backend().time_s(), gait, v.x(), v.y(), v.z());
     run.client.run(high_level_command(ModeId::RecoveryStand, 0), 8.0);
-    recovered += upright(run.mc.backend().ground_truth()) && run.mc.machine().status().order_process_bar >= 95;
+    recovered += upright(run.mc.simulation().ground_truth()) && run.mc.machine().status().order_process_bar >= 95;
   }
   return {fmt("random-command soak, %.0f min", minutes), std::to_string(commands) + " commands",
           std::to_string(falls) + " falls, " + std::to_string(stops) + " protective stops, " +

@@ -21,6 +21,7 @@
 #include <vector>
 
 #include "app/mc.hpp"
+#include "app/simulated_robot.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
 #include "timed_benchmark_main.hpp"
@@ -117,7 +118,7 @@ void motor_ctrl_to_spi_data_latency(benchmark::State& state, double seconds) {
     McConfig config = default_config();
     config.startup = Startup::Damper;
     config.motor_sdk.enabled = true;
-    Mc mc(config);
+    Mc mc = make_simulated_mc(config);
     // declared before the adapter: its thread logs until the adapter is gone
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> log(std::fopen("/dev/null", "w"), &std::fclose);
     LcmMotorSdkAdapter adapter(config.motor_sdk, log.get());

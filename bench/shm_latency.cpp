@@ -22,6 +22,7 @@
 #include <vector>
 
 #include "app/mc.hpp"
+#include "app/simulated_robot.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_source.hpp"
 #include "lowlevel/lowlevel_sync.h"
 #include "timed_benchmark_main.hpp"
@@ -65,7 +66,7 @@ void shm_command_to_state_latency(benchmark::State& state, double seconds) {
     config.startup = Startup::Damper;
     config.shm.enabled = true;
     config.shm.name_prefix = "cbbench" + std::to_string(::getpid()) + "_";
-    Mc mc(config);
+    Mc mc = make_simulated_mc(config);
     // declared before the source: its log thread writes until the source is gone
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> log(std::fopen("/dev/null", "w"), &std::fclose);
     ShmLowLevelSource source(config.shm, config.safety, log.get());
@@ -122,7 +123,7 @@ void shm_command_to_state_latency(benchmark::State& state, double seconds) {
     state.counters["late_substeps"] = static_cast<double>(stats.late_substeps);
     state.counters["cmd_timeouts"] = static_cast<double>(counters.command_timeouts);
     state.counters["robot_s"] = stats.robot_time_s;
-    state.counters["height_m"] = mc.backend().ground_truth().position[2];
+    state.counters["height_m"] = mc.simulation().ground_truth().position[2];
     ::munmap(shm, LOWLEVEL_SPLINE_SHM_SIZE);
     ::munmap(imu, LOWLEVEL_IMU_SHM_SIZE);
   }

@@ -10,36 +10,13 @@
 #include "backend/robot_backend.hpp"
 #include "control/motion_controller.hpp"
 #include "core/robot_state.hpp"
+#include "cycle/cycle_observer.hpp"
+#include "cycle/cycle_record.hpp"
+#include "cycle/substep_participant.hpp"
 #include "estimation/state_estimator.hpp"
 #include "safety/command_guard.hpp"
 
 namespace cerebellum {
-
-// everything one cycle saw and did
-struct CycleRecord {
-  std::uint64_t tick = 0;
-  RobotState state;
-  JointCommand command;  // as written to the robot, after the guard
-  SafetyReport safety;
-};
-
-// sees every cycle record in the loop thread; must only copy (no I/O, no blocking)
-class CycleObserver {
- public:
-  virtual ~CycleObserver() = default;
-  virtual void on_cycle(const CycleRecord& record) = 0;
-};
-
-// runs at every substep of a control period (each physics_substep_s of robot time), after the
-// control stage on substep 0: it sees the newest sensor frame and may replace the command the
-// motors run until the next substep (the loop guards the replacement). For interfaces with a
-// faster handshake than the control tick, such as the 1 ms shared-memory interface.
-class SubstepParticipant {
- public:
-  virtual ~SubstepParticipant() = default;
-  // return true when command was replaced
-  virtual bool on_substep(const SensorFrame& frame, JointCommand& command) = 0;
-};
 
 struct RunOptions {
   double duration_s = -1.0;  // simulated/robot seconds to run; < 0 runs until stopped

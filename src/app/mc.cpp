@@ -1,9 +1,6 @@
 #include "app/mc.hpp"
 
-#include "control/locomotion/gait_table.hpp"
-#include "control/qp/goldfarb_idnani_solver.hpp"
-
-#include <cmath>
+#include <stdexcept>
 
 namespace cerebellum {
 
@@ -17,44 +14,36 @@ HighLevelCommand startup_command(Startup startup) {
 
 namespace {
 
-PureDamperConfig pure_damper_config(const McConfig& config) {
-  PureDamperConfig damper = default_pure_damper_config();
-  damper.damping_kd = config.safety.damping_kd;
-  return damper;
+ModeSetConfig mode_set_config(const McConfig& config) {
+  ModeSetConfig modes;
+  modes.loop_period_s = config.loop_period_s;
+  modes.damping_kd = config.safety.damping_kd;
+  modes.stand_up = config.stand_up;
+  modes.locomotion_stand = config.locomotion_stand;
+  return modes;
 }
 
-WalkingGaitsConfig walking_config(const McConfig& config) {
-  WalkingGaitsConfig walking;
-  walking.locomotion.tick_s = config.loop_period_s;
-  walking.locomotion.ticks_per_segment = static_cast<int>(std::lround(0.03 / config.loop_period_s));
-  walking.failure_damping_kd = config.safety.damping_kd;
-  return walking;
+RobotBackend& require_backend(const std::unique_ptr<RobotBackend>& backend) {
+  if (!backend) throw std::invalid_argument("Mc: no robot backend");
+  return *backend;
 }
 
 }  // namespace
 
-Mc::Mc(const McConfig& config)
+Mc::Mc(const McConfig& config, McRobot robot)
     : config_(config),
-      backend_(config.robot),
-      pure_damper_(pure_damper_config(config)),
-      recovery_stand_(config.stand_up),
-      lifted_(default_lifted_config()),
-      walking_(walking_config(config), std::make_unique<qp::GoldfarbIdnaniSolver>(), &estimator_),
-      locomotion_(gaits_),
+      backend_(std::move(robot.backend)),
+      simulation_(robot.simulation),
+      modes_(mode_set_config(config), &estimator_),
       machine_(config.loop_period_s, startup_command(config.startup)),
       arbiter_(machine_),
-      loop_(backend_, estimator_, arbiter_, config.safety, config.loop_period_s) {
-  machine_.add_mode(off_);
-  machine_.add_mode(pure_damper_);
-  machine_.add_mode(recovery_stand_);
-  machine_.add_mode(qp_stand_);
-  machine_.add_mode(pose_control_);
-  machine_.add_mode(lifted_);
-  // the walking gaits run on the MPC locomotion controller; the stands on the configured one
-  LocomotionGait& stand = config.locomotion_stand == LocomotionStand::Mpc ? static_cast<LocomotionGait&>(walking_)
-                                                                          : qp_stand_gait_;
-  for (const GaitSpec& gait : kGaitTable) gaits_.add(gait.id, gait_steps(gait) ? walking_ : stand);
-  machine_.add_mode(locomotion_);
+      loop_(require_backend(backend_), estimator_, arbiter_, config.safety, config.loop_period_s) {
+  modes_.add_to(machine_);
+}
+
+Simulation& Mc::simulation() {
+  if (simulation_ == nullptr) throw std::logic_error("Mc: the robot is not simulated (no simulation handle)");
+  return *simulation_;
 }
 
 }  // namespace cerebellum

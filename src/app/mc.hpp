@@ -1,20 +1,16 @@
-// The MC assembled from its configuration: robot, estimator, modes, state machine, arbiter and
-// loop. Client interfaces attach to it (arbiter sources, loop observers, substep participants).
+// The MC assembled from its configuration on a given robot: estimator, modes, state machine,
+// arbiter and loop. Client interfaces attach to it (arbiter sources, loop observers, substep
+// participants); tools and tests reach a simulated robot through simulation().
 #pragma once
+
+#include <memory>
 
 #include "app/control_loop.hpp"
 #include "app/mc_config.hpp"
-#include "backend/mujoco_backend.hpp"
+#include "app/mc_robot.hpp"
 #include "estimation/body_state_estimator.hpp"
 #include "modes/high_level_machine.hpp"
-#include "modes/lifted_mode.hpp"
-#include "modes/locomotion_mode.hpp"
-#include "modes/locomotion_stand_gait.hpp"
-#include "modes/walking_gaits.hpp"
-#include "modes/passive_modes.hpp"
-#include "modes/pose_control_mode.hpp"
-#include "modes/qp_stand_mode.hpp"
-#include "modes/recovery_stand_mode.hpp"
+#include "modes/mode_set.hpp"
 #include "modes/source_arbiter.hpp"
 
 namespace cerebellum {
@@ -24,32 +20,28 @@ HighLevelCommand startup_command(Startup startup);
 
 class Mc {
  public:
-  // throws (std::runtime_error) when the robot model cannot be loaded
-  explicit Mc(const McConfig& config);
+  // robot.backend: what the loop reads and drives (owned); robot.simulation: the same robot's
+  // simulation handle, or nullptr (throws std::invalid_argument without a backend)
+  Mc(const McConfig& config, McRobot robot);
   Mc(const Mc&) = delete;
   Mc& operator=(const Mc&) = delete;
 
-  MujocoBackend& backend() { return backend_; }
+  RobotBackend& backend() { return *backend_; }
+  bool simulated() const { return simulation_ != nullptr; }
+  // throws std::logic_error when the robot is not simulated
+  Simulation& simulation();
   HighLevelMachine& machine() { return machine_; }
   SourceArbiter& arbiter() { return arbiter_; }
   ControlLoop& loop() { return loop_; }
   const McConfig& config() const { return config_; }
-  const WalkingGaits& walking() const { return walking_; }
+  const WalkingGaits& walking() const { return modes_.walking(); }
 
  private:
   McConfig config_;
-  MujocoBackend backend_;
+  std::unique_ptr<RobotBackend> backend_;
+  Simulation* simulation_;
   BodyStateEstimator estimator_;
-  OffMode off_;
-  PureDamperMode pure_damper_;
-  RecoveryStandMode recovery_stand_;
-  QpStandMode qp_stand_;
-  PoseControlMode pose_control_;
-  LiftedMode lifted_;
-  GaitRegistry gaits_;
-  WalkingGaits walking_;
-  LocomotionStandGait qp_stand_gait_;
-  LocomotionMode locomotion_;
+  ModeSet modes_;
   HighLevelMachine machine_;
   SourceArbiter arbiter_;
   ControlLoop loop_;

@@ -10,6 +10,7 @@
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
+#include "modes/locomotion_stand.hpp"
 #include "safety/command_guard.hpp"
 
 namespace cerebellum {
@@ -19,14 +20,6 @@ enum class Startup {
   Stand,    // stand up and hold (the default demo)
   Off,      // motors passive; low-level clients may take over
   Damper,   // joint damping (PureDamper); low-level clients may take over
-};
-
-// what serves mode 11's stand gaits 1 and 31
-enum class LocomotionStand {
-  Mpc,  // the walking controller with an all-stance schedule: a stand asked for while walking
-        // first brings the body to rest by stepping
-  Qp,   // the force-based QP stand of mode 3: gait 1 pulls the body back over its feet after a
-        // push, 31 only damps it; a stand asked for while walking stops the legs at once
 };
 
 struct McConfig {

@@ -82,9 +82,9 @@ std::string telemetry_line(const TelemetryRow& row) {
   return line;
 }
 
-TelemetryRecorder::TelemetryRecorder(const std::string& path, double rate_hz, const MujocoBackend& backend,
+TelemetryRecorder::TelemetryRecorder(const std::string& path, double rate_hz, const Simulation& simulation,
                                      const HighLevelMachine& machine)
-    : path_(path), rate_hz_(rate_hz), backend_(backend), machine_(machine) {
+    : path_(path), rate_hz_(rate_hz), simulation_(simulation), machine_(machine) {
   if (!(rate_hz > 0.0)) throw std::invalid_argument("telemetry: the rate must be > 0 Hz");
   file_ = std::fopen(path.c_str(), "w");
   if (!file_) throw std::runtime_error("telemetry: cannot create " + path + ": " + std::strerror(errno));
@@ -95,7 +95,7 @@ TelemetryRecorder::TelemetryRecorder(const std::string& path, double rate_hz, co
 TelemetryRecorder::~TelemetryRecorder() { finish(); }
 
 void TelemetryRecorder::on_cycle(const CycleRecord& record) {
-  const double time_s = backend_.time_s();
+  const double time_s = simulation_.time_s();
   if (!started_) {
     started_ = true;
     start_s_ = time_s;
@@ -103,7 +103,7 @@ void TelemetryRecorder::on_cycle(const CycleRecord& record) {
   if (time_s < start_s_ + static_cast<double>(next_row_) / rate_hz_ - 1e-9) return;
   // one row per tick at most: a rate above the loop's gives every tick
   while (time_s >= start_s_ + static_cast<double>(next_row_) / rate_hz_ - 1e-9) ++next_row_;
-  ring_.try_push(telemetry_row(record, backend_.ground_truth(), machine_.status(), machine_.running_command()));
+  ring_.try_push(telemetry_row(record, simulation_.ground_truth(), machine_.status(), machine_.running_command()));
 }
 
 void TelemetryRecorder::drain() {

@@ -12,9 +12,9 @@
 #include <string>
 #include <thread>
 
-#include "app/control_loop.hpp"
-#include "backend/mujoco_backend.hpp"
+#include "backend/simulation.hpp"
 #include "core/spsc_ring.hpp"
+#include "cycle/cycle_observer.hpp"
 #include "modes/high_level_machine.hpp"
 
 namespace cerebellum {
@@ -52,7 +52,7 @@ class TelemetryRecorder final : public CycleObserver {
  public:
   // rate_hz: rows per second of robot time (a rate above the loop's gives every tick);
   // throws std::runtime_error naming the file when it cannot be created
-  TelemetryRecorder(const std::string& path, double rate_hz, const MujocoBackend& backend,
+  TelemetryRecorder(const std::string& path, double rate_hz, const Simulation& simulation,
                     const HighLevelMachine& machine);
   ~TelemetryRecorder() override;
   TelemetryRecorder(const TelemetryRecorder&) = delete;
@@ -67,7 +67,7 @@ class TelemetryRecorder final : public CycleObserver {
 
   std::string path_;
   double rate_hz_;
-  const MujocoBackend& backend_;
+  const Simulation& simulation_;
   const HighLevelMachine& machine_;
   std::FILE* file_ = nullptr;
   // loop thread

@@ -6,7 +6,7 @@ namespace cerebellum {
 
 SimTools::SimTools(Mc& mc, const SimOptions& options) : mc_(mc), options_(options) {
   if (!options.telemetry_path.empty()) {
-    telemetry_ = std::make_unique<TelemetryRecorder>(options.telemetry_path, options.telemetry_rate_hz, mc.backend(),
+    telemetry_ = std::make_unique<TelemetryRecorder>(options.telemetry_path, options.telemetry_rate_hz, mc.simulation(),
                                                      mc.machine());
     mc.loop().add_observer(*telemetry_);
   }
@@ -17,7 +17,7 @@ SimTools::SimTools(Mc& mc, const SimOptions& options) : mc_(mc), options_(option
     video.width = options.record_width;
     video.height = options.record_height;
     video.lockstep = options.speed <= 0.0;
-    video_ = std::make_unique<VideoRecorder>(mc.backend(), mc.machine(), video);
+    video_ = std::make_unique<VideoRecorder>(mc.simulation(), mc.machine(), video);
     mc.loop().add_observer(*video_);
   }
   if (options.viewer) viewer_ = std::make_unique<ViewerSession>(mc);

@@ -9,8 +9,8 @@
 
 namespace cerebellum {
 
-VideoRecorder::VideoRecorder(const MujocoBackend& backend, const HighLevelMachine& machine, const VideoOptions& options)
-    : options_(options), backend_(backend), capture_(backend, machine), staging_(capture_.sized_snapshot()) {
+VideoRecorder::VideoRecorder(const Simulation& simulation, const HighLevelMachine& machine, const VideoOptions& options)
+    : options_(options), simulation_(simulation), capture_(simulation, machine), staging_(capture_.sized_snapshot()) {
   for (Slot& slot : slots_) slot.snapshot = capture_.sized_snapshot();
   std::promise<void> ready;
   std::future<void> started = ready.get_future();
@@ -27,7 +27,7 @@ VideoRecorder::VideoRecorder(const MujocoBackend& backend, const HighLevelMachin
 VideoRecorder::~VideoRecorder() { finish(); }
 
 void VideoRecorder::on_cycle(const CycleRecord& record) {
-  const double time_s = backend_.time_s();
+  const double time_s = simulation_.time_s();
   if (!started_) {
     started_ = true;
     start_s_ = time_s;
@@ -61,7 +61,7 @@ void VideoRecorder::render_thread(std::promise<void>& ready) {
     context = std::make_unique<EglOffscreenContext>();
     // text about a fifth of the height at 640x480 and below, smaller in small videos
     const int font_scale = options_.height <= 300 ? mjFONTSCALE_50 : mjFONTSCALE_100;
-    renderer = std::make_unique<SceneRenderer>(backend_.model(), options_.width, options_.height, font_scale);
+    renderer = std::make_unique<SceneRenderer>(simulation_.model(), options_.width, options_.height, font_scale);
     renderer->use_offscreen_buffer();
     pipe = std::make_unique<FfmpegPipe>(options_.path, options_.width, options_.height, options_.fps);
   } catch (...) {

@@ -15,8 +15,8 @@
 #include <string>
 #include <thread>
 
-#include "app/control_loop.hpp"
 #include "app/viewer_snapshot.hpp"
+#include "cycle/cycle_observer.hpp"
 
 namespace cerebellum {
 
@@ -38,7 +38,7 @@ class VideoRecorder final : public CycleObserver {
  public:
   // starts the render thread; throws std::runtime_error when the headless context or ffmpeg
   // cannot be started
-  VideoRecorder(const MujocoBackend& backend, const HighLevelMachine& machine, const VideoOptions& options);
+  VideoRecorder(const Simulation& simulation, const HighLevelMachine& machine, const VideoOptions& options);
   ~VideoRecorder() override;
   VideoRecorder(const VideoRecorder&) = delete;
   VideoRecorder& operator=(const VideoRecorder&) = delete;
@@ -59,7 +59,7 @@ class VideoRecorder final : public CycleObserver {
   void enqueue(std::uint64_t frame);
 
   VideoOptions options_;
-  const MujocoBackend& backend_;
+  const Simulation& simulation_;
   SnapshotCapture capture_;
   // loop thread
   SimSnapshot staging_;

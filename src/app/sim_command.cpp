@@ -10,6 +10,7 @@
 #include "app/sim_options.hpp"
 #include "app/mc.hpp"
 #include "app/record_tools.hpp"
+#include "app/simulated_robot.hpp"
 #include "app/stop_signal.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
@@ -35,7 +36,7 @@ int run_sim_command(const std::vector<std::string>& args) {
 
   StopSignal stop_signal;
   try {
-    Mc mc(config);
+    Mc mc = make_simulated_mc(config);
     ControlLoop& loop = mc.loop();
     // client interfaces attach here: mc.arbiter() sources, loop observers, substep participants
     ConsoleReporter reporter(stdout);
@@ -73,7 +74,7 @@ int run_sim_command(const std::vector<std::string>& args) {
                 stats.robot_time_s, stats.wall_time_s,
                 stats.wall_time_s > 0 ? stats.robot_time_s / stats.wall_time_s : 0.0,
                 static_cast<unsigned long long>(stats.ticks), static_cast<unsigned long long>(stats.late_substeps),
-                mc.backend().ground_truth().position[2]);
+                mc.simulation().ground_truth().position[2]);
     if (!tools_ok) return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cerebellum sim: %s\n", e.what());

@@ -1,7 +1,5 @@
 #include "app/viewer_session.hpp"
 
-#include <mujoco/mujoco.h>
-
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
@@ -44,9 +42,8 @@ std::string run_state_text(const PaceRequest& pace, double base_speed) {
 
 }  // namespace
 
-ViewerExchange::ViewerExchange(MujocoBackend& backend, const HighLevelMachine& machine)
-    : backend_(backend), capture_(backend, machine), staging_(capture_.sized_snapshot()),
-      shared_(capture_.sized_snapshot()) {}
+ViewerExchange::ViewerExchange(const Simulation& simulation, const HighLevelMachine& machine)
+    : capture_(simulation, machine), staging_(capture_.sized_snapshot()), shared_(capture_.sized_snapshot()) {}
 
 void ViewerExchange::on_cycle(const CycleRecord& record) {
   capture_.capture(record, staging_);
@@ -55,20 +52,6 @@ void ViewerExchange::on_cycle(const CycleRecord& record) {
     has_snapshot_ = true;
     snapshot_mutex_.unlock();
   }
-  PushRequest request;
-  if (push_mutex_.try_lock()) {
-    request = push_;
-    push_mutex_.unlock();
-  } else {
-    return;  // the viewer is writing the mailbox: the force already applied stays one more tick
-  }
-  if (!request.active && !pushing_) return;
-  const mjData* data = backend_.data();
-  const int trunk = capture_.trunk_body();
-  const std::array<double, 3> com{data->xipos[3 * trunk], data->xipos[3 * trunk + 1], data->xipos[3 * trunk + 2]};
-  const std::array<double, 3> velocity{data->qvel[0], data->qvel[1], data->qvel[2]};
-  backend_.set_external_force(push_force(request, com, velocity, spring_));
-  pushing_ = request.active;
 }
 
 bool ViewerExchange::latest(SimSnapshot& out) {
@@ -77,15 +60,10 @@ bool ViewerExchange::latest(SimSnapshot& out) {
   return has_snapshot_;
 }
 
-void ViewerExchange::set_push(const PushRequest& request) {
-  std::lock_guard<std::mutex> lock(push_mutex_);
-  push_ = request;
-}
-
 ViewerSession::ViewerSession(Mc& mc)
     : mc_(mc),
-      window_(std::make_unique<ViewerWindow>(mc.backend().model(), "cerebellum: simulated CyberDog2")),
-      exchange_(mc.backend(), mc.machine()) {
+      window_(std::make_unique<ViewerWindow>(mc.simulation().model(), "cerebellum: simulated CyberDog2")),
+      exchange_(mc.simulation(), mc.machine()) {
   mc.loop().add_observer(exchange_);
 }
 
@@ -102,7 +80,7 @@ RunStats ViewerSession::run(const RunOptions& options, const std::atomic<bool>& 
 
   // the loop thread runs paced segments; a change of pace ends the segment and starts the next
   std::thread loop_thread([&] {
-    MujocoBackend& backend = mc_.backend();
+    const RobotBackend& backend = mc_.backend();
     const double start_s = backend.time_s();
     const auto reached_end = [&] {
       return options.duration_s >= 0.0 && backend.time_s() - start_s >= options.duration_s - 1e-9;
@@ -147,14 +125,14 @@ RunStats ViewerSession::run(const RunOptions& options, const std::atomic<bool>& 
       shown = {controls.paused, controls.slow_motion, false};
       set_pace(shown);
     }
-    exchange_.set_push(window_->push());
+    mc_.simulation().request_push(window_->push());
     if (exchange_.latest(snapshot)) window_->draw(snapshot, run_state_text(shown, options.speed));
     next_frame += kFramePeriod;
     std::this_thread::sleep_until(next_frame);
     if (next_frame < std::chrono::steady_clock::now()) next_frame = std::chrono::steady_clock::now();
   }
   loop_thread.join();
-  exchange_.set_push({});
+  mc_.simulation().request_push({});
 
   if (!screenshot_png.empty()) {
     if (!exchange_.latest(snapshot)) throw std::runtime_error("viewer: no frame to save (the loop never ticked)");

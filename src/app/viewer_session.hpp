@@ -1,6 +1,6 @@
 // `cerebellum sim --viewer`: the live window in the main thread, the control loop in its own
-// thread. The loop hands a snapshot (qpos, qvel, status) over a mutex each tick; the window sends
-// pushes back through a mailbox the loop applies between ticks; pause and slow motion restart
+// thread. The loop hands a snapshot (qpos, qvel, status) over a mutex each tick; the window posts
+// pushes to the simulation, which applies them at its own steps; pause and slow motion restart
 // the paced run at the new speed.
 #pragma once
 
@@ -11,36 +11,29 @@
 
 #include "app/control_loop.hpp"
 #include "app/viewer_snapshot.hpp"
-#include "viz/push_request.hpp"
+#include "backend/simulation.hpp"
 
 namespace cerebellum {
 
 class Mc;
 class ViewerWindow;
 
-// the loop side: a CycleObserver that copies snapshots out and applies the latest push
+// the loop side: a CycleObserver that copies snapshots out (it only reads)
 class ViewerExchange final : public CycleObserver {
  public:
-  ViewerExchange(MujocoBackend& backend, const HighLevelMachine& machine);
+  ViewerExchange(const Simulation& simulation, const HighLevelMachine& machine);
 
-  // loop thread; never waits for the viewer (a busy mailbox is read next tick)
+  // loop thread; never waits for the viewer (a busy snapshot is handed over next tick)
   void on_cycle(const CycleRecord& record) override;
   // viewer thread: the newest snapshot, false before the first tick
   bool latest(SimSnapshot& out);
-  // viewer thread
-  void set_push(const PushRequest& request);
 
  private:
-  MujocoBackend& backend_;
   SnapshotCapture capture_;
-  PushSpring spring_;
   SimSnapshot staging_;  // loop thread
-  bool pushing_ = false;  // loop thread: a force is on the trunk
   std::mutex snapshot_mutex_;
   SimSnapshot shared_;
   bool has_snapshot_ = false;
-  std::mutex push_mutex_;
-  PushRequest push_;
 };
 
 class ViewerSession {

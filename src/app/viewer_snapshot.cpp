@@ -7,20 +7,20 @@
 
 namespace cerebellum {
 
-SnapshotCapture::SnapshotCapture(const MujocoBackend& backend, const HighLevelMachine& machine)
-    : backend_(backend), machine_(machine),
-      trunk_body_(std::max(0, mj_name2id(backend.model(), mjOBJ_BODY, "trunk"))) {}
+SnapshotCapture::SnapshotCapture(const Simulation& simulation, const HighLevelMachine& machine)
+    : simulation_(simulation), machine_(machine),
+      trunk_body_(std::max(0, mj_name2id(simulation.model(), mjOBJ_BODY, "trunk"))) {}
 
 SimSnapshot SnapshotCapture::sized_snapshot() const {
   SimSnapshot snapshot;
-  snapshot.qpos.assign(static_cast<std::size_t>(backend_.model()->nq), 0.0);
-  snapshot.qvel.assign(static_cast<std::size_t>(backend_.model()->nv), 0.0);
+  snapshot.qpos.assign(static_cast<std::size_t>(simulation_.model()->nq), 0.0);
+  snapshot.qvel.assign(static_cast<std::size_t>(simulation_.model()->nv), 0.0);
   return snapshot;
 }
 
 void SnapshotCapture::capture(const CycleRecord& record, SimSnapshot& out) const {
-  const mjModel* model = backend_.model();
-  const mjData* data = backend_.data();
+  const mjModel* model = simulation_.model();
+  const mjData* data = simulation_.data();
   out.tick = record.tick;
   out.time_s = data->time;
   std::copy_n(data->qpos, std::min(out.qpos.size(), static_cast<std::size_t>(model->nq)), out.qpos.begin());
@@ -35,7 +35,7 @@ void SnapshotCapture::capture(const CycleRecord& record, SimSnapshot& out) const
   const RobotState& state = record.state;
   out.estimated_velocity_body = {state.velocity_body.x(), state.velocity_body.y(), state.omega_body.z()};
   out.estimated_height_m = state.height_m;
-  const GroundTruth truth = backend_.ground_truth();
+  const GroundTruth truth = simulation_.ground_truth();
   out.true_velocity_body = planar_velocity_body(truth.quat, truth.velocity_world, truth.angular_velocity_body);
   out.true_height_m = truth.position[2];
 }

@@ -3,8 +3,8 @@
 
 #include <array>
 
-#include "app/control_loop.hpp"
-#include "backend/mujoco_backend.hpp"
+#include "backend/simulation.hpp"
+#include "cycle/cycle_record.hpp"
 #include "modes/high_level_machine.hpp"
 #include "viz/sim_snapshot.hpp"
 
@@ -13,16 +13,15 @@ namespace cerebellum {
 class SnapshotCapture {
  public:
   // machine: its status and running command, read at every capture
-  SnapshotCapture(const MujocoBackend& backend, const HighLevelMachine& machine);
+  SnapshotCapture(const Simulation& simulation, const HighLevelMachine& machine);
 
   // a snapshot whose state vectors are sized to the model (allocates once)
   SimSnapshot sized_snapshot() const;
   // copies the cycle, the simulator state and the MC status into a sized snapshot
   void capture(const CycleRecord& record, SimSnapshot& out) const;
-  int trunk_body() const { return trunk_body_; }
 
  private:
-  const MujocoBackend& backend_;
+  const Simulation& simulation_;
   const HighLevelMachine& machine_;
   int trunk_body_ = 0;
 };

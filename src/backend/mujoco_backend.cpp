@@ -111,10 +111,12 @@ void MujocoBackend::apply_motor_drivers() {
 void MujocoBackend::advance(double period_s) {
   const double dt = model_->opt.timestep;
   const long steps = std::max(1L, std::lround(period_s / dt));
+  take_push_request();
   for (long s = 0; s < steps; ++s) {
-    // the drivers evaluate their law on the state of this physics step
+    // the drivers and the push evaluate their laws on the state of this physics step
     mj_step1(model_, data_);
     apply_motor_drivers();
+    apply_push();
     mj_step2(model_, data_);
     for (std::size_t i = 0; i < kNumJoints; ++i) thermal_[i].update(applied_torque_[i], dt);
   }
@@ -154,6 +156,28 @@ void MujocoBackend::set_joint_positions(const JointArray<double>& q) {
 
 void MujocoBackend::set_external_force(const std::array<double, 3>& force_n) {
   for (int k = 0; k < 3; ++k) data_->xfrc_applied[6 * trunk_body_ + k] = force_n[k];
+}
+
+void MujocoBackend::request_push(const PushRequest& request) {
+  std::lock_guard<std::mutex> lock(push_mutex_);
+  posted_push_ = request;
+}
+
+void MujocoBackend::take_push_request() {
+  // never wait for the poster: a busy mailbox is read at the next advance
+  if (!push_mutex_.try_lock()) return;
+  push_ = posted_push_;
+  push_mutex_.unlock();
+}
+
+void MujocoBackend::apply_push() {
+  // nothing to do without a push, and once the force of the last one is lifted
+  if (!push_.active && !pushing_) return;
+  const double* com = data_->xipos + 3 * trunk_body_;
+  const std::array<double, 3> com_world{com[0], com[1], com[2]};
+  const std::array<double, 3> velocity_world{data_->qvel[0], data_->qvel[1], data_->qvel[2]};
+  set_external_force(push_force(push_, com_world, velocity_world, push_spring_));
+  pushing_ = push_.active;
 }
 
 }  // namespace cerebellum

@@ -3,15 +3,15 @@
 
 #include <array>
 #include <memory>
+#include <mutex>
 #include <random>
 #include <string>
 #include <vector>
 
 #include "backend/motor_model.hpp"
+#include "backend/push_request.hpp"
 #include "backend/robot_backend.hpp"
-
-struct mjModel_;
-struct mjData_;
+#include "backend/simulation.hpp"
 
 namespace cerebellum {
 
@@ -33,15 +33,8 @@ struct MujocoBackendConfig {
   MotorThermalParameters thermal;
 };
 
-// simulator truth, for tests and tools only: never handed to the controller
-struct GroundTruth {
-  std::array<double, 3> position{};         // world
-  std::array<double, 4> quat{1, 0, 0, 0};   // w, x, y, z, body to world
-  std::array<double, 3> velocity_world{};
-  std::array<double, 3> angular_velocity_body{};
-};
-
-class MujocoBackend final : public RobotBackend {
+// the MC runs on it as a RobotBackend; tools and tests see it as a Simulation
+class MujocoBackend final : public RobotBackend, public Simulation {
  public:
   // throws std::runtime_error naming the file when the model is missing or broken
   explicit MujocoBackend(const MujocoBackendConfig& config);
@@ -54,19 +47,22 @@ class MujocoBackend final : public RobotBackend {
   void advance(double period_s) override;
   double time_s() const override;
 
-  GroundTruth ground_truth() const;
-  // place the trunk (tests and tools): position in world, orientation w, x, y, z; zero velocity
-  void set_base_pose(const std::array<double, 3>& position, const std::array<double, 4>& quat);
-  void set_joint_positions(const JointArray<double>& q);
-  // a force on the trunk COM (world frame) that stays until changed, for push tests and the viewer
-  void set_external_force(const std::array<double, 3>& force_n);
+  GroundTruth ground_truth() const override;
+  void set_base_pose(const std::array<double, 3>& position, const std::array<double, 4>& quat) override;
+  void set_joint_positions(const JointArray<double>& q) override;
+  void set_external_force(const std::array<double, 3>& force_n) override;
+  void request_push(const PushRequest& request) override;
 
-  double physics_timestep_s() const;
-  const mjModel_* model() const { return model_; }
-  const mjData_* data() const { return data_; }
+  double physics_timestep_s() const override;
+  const mjModel_* model() const override { return model_; }
+  const mjData_* data() const override { return data_; }
 
  private:
   void apply_motor_drivers();
+  // the newest posted push request, unless the poster holds the mailbox (then the last one stays)
+  void take_push_request();
+  // the push's force on the state of this physics step (after mj_step1)
+  void apply_push();
 
   MujocoBackendConfig config_;
   mjModel_* model_ = nullptr;
@@ -84,6 +80,13 @@ class MujocoBackend final : public RobotBackend {
   std::vector<MotorThermalModel> thermal_;
   std::mt19937 rng_;
   std::normal_distribution<double> unit_normal_{0.0, 1.0};
+  // push mailbox: written by any thread, read when the robot steps
+  std::mutex push_mutex_;
+  PushRequest posted_push_;
+  // the stepping thread's push
+  PushRequest push_;
+  PushSpring push_spring_;
+  bool pushing_ = false;  // the push's force is on the trunk
 };
 
 }  // namespace cerebellum

@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "viz/push_request.hpp"
+#include "backend/push_request.hpp"
 #include "viz/scene_renderer.hpp"
 
 struct GLFWwindow;

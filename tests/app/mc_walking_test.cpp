@@ -6,6 +6,7 @@
 #include <string>
 
 #include "app/lockstep_client.hpp"
+#include "app/simulated_robot.hpp"
 
 namespace cerebellum {
 namespace {
@@ -21,51 +22,51 @@ McConfig lying_start() {
 }
 
 TEST(McWalking, StandsThenTrotsForwardOnCommand) {
-  Mc mc(lying_start());
+  Mc mc = make_simulated_mc(lying_start());
   LockstepClient client(mc);
   client.run(command(ModeId::RecoveryStand, 0), 3.0);
   EXPECT_EQ(mc.machine().status().mode, 12);
   EXPECT_EQ(mc.machine().status().order_process_bar, 100);
-  const double x0 = mc.backend().ground_truth().position[0];
+  const double x0 = mc.simulation().ground_truth().position[0];
   client.run(command(ModeId::Locomotion, 3, 0.5), 5.0);
   EXPECT_EQ(mc.machine().status().mode, 11);
   EXPECT_EQ(mc.machine().status().gait_id, 3);
   EXPECT_EQ(mc.machine().status().switch_status, SwitchStatus::Done);
-  EXPECT_NEAR(mc.backend().ground_truth().position[0] - x0, 2.5, 0.15 * 2.5);
-  EXPECT_GT(mc.backend().ground_truth().position[2], 0.22);
+  EXPECT_NEAR(mc.simulation().ground_truth().position[0] - x0, 2.5, 0.15 * 2.5);
+  EXPECT_GT(mc.simulation().ground_truth().position[2], 0.22);
 }
 
 TEST(McWalking, WalkingFromLyingIsBannedAndTheRobotStaysDown) {
-  Mc mc(lying_start());
+  Mc mc = make_simulated_mc(lying_start());
   LockstepClient client(mc);
   client.run(command(ModeId::Locomotion, 3, 0.5), 1.0);
   EXPECT_EQ(mc.machine().status().mode, 0);
   EXPECT_EQ(mc.machine().status().switch_status, SwitchStatus::BanTransition);
-  EXPECT_LT(mc.backend().ground_truth().position[2], 0.2);
+  EXPECT_LT(mc.simulation().ground_truth().position[2], 0.2);
 }
 
 TEST(McWalking, ClientThatVanishesWhileWalkingGetsTheRobotDamped) {
-  Mc mc(lying_start());
+  Mc mc = make_simulated_mc(lying_start());
   LockstepClient client(mc);
   client.run(command(ModeId::RecoveryStand, 0), 3.0);
   client.run(command(ModeId::Locomotion, 27, 0.3), 2.0);
   // silence: no heartbeat for 2 s
   for (int i = 0; i < 1000; ++i) mc.loop().tick();
   EXPECT_EQ(mc.machine().status().mode, 7);
-  EXPECT_LT(mc.backend().ground_truth().position[2], 0.2);
-  const auto v = mc.backend().ground_truth().velocity_world;
+  EXPECT_LT(mc.simulation().ground_truth().position[2], 0.2);
+  const auto v = mc.simulation().ground_truth().velocity_world;
   EXPECT_LT(std::hypot(v[0], v[1]), 0.1);
 }
 
 TEST(McWalking, StopsAndStandsWhenAskedForTheStandGaitWhileRunning) {
-  Mc mc(lying_start());
+  Mc mc = make_simulated_mc(lying_start());
   LockstepClient client(mc);
   client.run(command(ModeId::RecoveryStand, 0), 3.0);
   client.run(command(ModeId::Locomotion, 10, 1.2), 4.0);
   client.run(command(ModeId::Locomotion, 1), 3.0);
-  const auto v = mc.backend().ground_truth().velocity_world;
+  const auto v = mc.simulation().ground_truth().velocity_world;
   EXPECT_LT(std::hypot(v[0], v[1]), 0.1);
-  EXPECT_GT(mc.backend().ground_truth().position[2], 0.22);
+  EXPECT_GT(mc.simulation().ground_truth().position[2], 0.22);
   EXPECT_EQ(mc.machine().status().gait_id, 1);
 }
 
@@ -78,7 +79,7 @@ namespace {
 TEST(McWalking, QpStandServesTheStandGaitsWhenConfigured) {
   McConfig config = lying_start();
   config.locomotion_stand = LocomotionStand::Qp;
-  Mc mc(config);
+  Mc mc = make_simulated_mc(config);
   LockstepClient client(mc);
   client.run(command(ModeId::RecoveryStand, 0), 3.0);
   client.run(command(ModeId::Locomotion, 31), 2.0);
@@ -86,7 +87,7 @@ TEST(McWalking, QpStandServesTheStandGaitsWhenConfigured) {
   EXPECT_EQ(mc.machine().status().gait_id, 31);
   // the QP stand plans no steps: the walking controller has not run a single MPC solve
   EXPECT_EQ(mc.walking().controller().telemetry().mpc_solves, 0u);
-  EXPECT_GT(mc.backend().ground_truth().position[2], 0.2);
+  EXPECT_GT(mc.simulation().ground_truth().position[2], 0.2);
 }
 
 }  // namespace
@@ -98,7 +99,7 @@ namespace {
 TEST(McWalking, ClimbsTheTenDegreeRamp) {
   McConfig config = lying_start();
   config.robot.model_path = std::string(CEREBELLUM_MODEL_DIR) + "/terrain_slope10.xml";
-  Mc mc(config);
+  Mc mc = make_simulated_mc(config);
   LockstepClient client(mc);
   client.run(command(ModeId::RecoveryStand, 0), 3.0);
   bool upright = true;
@@ -107,8 +108,8 @@ TEST(McWalking, ClimbsTheTenDegreeRamp) {
   });
   EXPECT_TRUE(upright);
   // the ramp rises 0.52 m over 3 m from x = 1 m; the trunk ends on the plateau
-  EXPECT_GT(mc.backend().ground_truth().position[0], 4.0);
-  EXPECT_GT(mc.backend().ground_truth().position[2], 0.5 + 0.2);
+  EXPECT_GT(mc.simulation().ground_truth().position[0], 4.0);
+  EXPECT_GT(mc.simulation().ground_truth().position[2], 0.5 + 0.2);
 }
 
 }  // namespace

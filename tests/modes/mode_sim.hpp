@@ -1,4 +1,4 @@
-// A simulated robot run by a state machine built from the high-level modes, stepped in lockstep,
+// A simulated robot run by a state machine built from the MC's high-level modes, stepped in lockstep,
 // and a scripted client that sends commands and heartbeats the way the example clients do.
 // Simulator truth is read only to check results (and to act as the hand that picks the robot up).
 #pragma once
@@ -16,13 +16,7 @@
 #include "control/stand_up_controller.hpp"
 #include "estimation/body_state_estimator.hpp"
 #include "modes/high_level_machine.hpp"
-#include "modes/lifted_mode.hpp"
-#include "modes/locomotion_mode.hpp"
-#include "modes/locomotion_stand_gait.hpp"
-#include "modes/passive_modes.hpp"
-#include "modes/pose_control_mode.hpp"
-#include "modes/qp_stand_mode.hpp"
-#include "modes/recovery_stand_mode.hpp"
+#include "modes/mode_set.hpp"
 
 namespace cerebellum::testing {
 
@@ -33,21 +27,25 @@ inline HighLevelCommand command(ModeId mode, int gait = 0) {
   return c;
 }
 
+// the MC's modes (modes/mode_set.hpp) with mode 11's stands on the QP stand
+inline ModeSetConfig mode_sim_config() {
+  ModeSetConfig config;
+  config.loop_period_s = 0.002;
+  config.damping_kd = GuardLimits{}.damping_kd;
+  config.stand_up = default_stand_up_config();
+  config.locomotion_stand = LocomotionStand::Qp;
+  return config;
+}
+
 struct ModeSim {
   explicit ModeSim(ModeId startup = ModeId::RecoveryStand, double initial_height_m = 0.3)
       : backend(sim_config(initial_height_m)),
-        pure_damper(default_pure_damper_config()),
-        recovery_stand(default_stand_up_config()),
-        locomotion(gaits),
-        lifted(default_lifted_config()),
+        modes(mode_sim_config(), &estimator),
+        recovery_stand(modes.recovery_stand()),
+        stand_gait(modes.qp_stand_gait()),
         machine(0.002, command(startup)),
         loop(backend, estimator, machine, GuardLimits{}, 0.002) {
-    gaits.add(LocomotionStandGait::kWithPushRecovery, stand_gait);
-    gaits.add(LocomotionStandGait::kWithoutPushRecovery, stand_gait);
-    for (Mode* mode : std::initializer_list<Mode*>{&off, &pure_damper, &recovery_stand, &qp_stand, &pose_control,
-                                                   &locomotion, &lifted}) {
-      machine.add_mode(*mode);
-    }
+    modes.add_to(machine);
   }
 
   double time_s() const { return backend.time_s(); }
@@ -103,15 +101,9 @@ struct ModeSim {
 
   MujocoBackend backend;
   BodyStateEstimator estimator;
-  OffMode off;
-  PureDamperMode pure_damper;
-  RecoveryStandMode recovery_stand;
-  QpStandMode qp_stand;
-  PoseControlMode pose_control;
-  GaitRegistry gaits;
-  LocomotionStandGait stand_gait;
-  LocomotionMode locomotion;
-  LiftedMode lifted;
+  ModeSet modes;
+  const RecoveryStandMode& recovery_stand;
+  const LocomotionStandGait& stand_gait;
   HighLevelMachine machine;
   ControlLoop loop;
   int life_count = 0;

@@ -152,13 +152,14 @@ TEST(LocomotionStandSim, UnregisteredWalkingGaitIsBannedWithAReason) {
   sim.send(loco(1), 1.0);
   while (sim.machine.refusals().try_pop()) {
   }
-  sim.send(loco(27), 0.1);
+  // the walking gaits are registered (the MC's mode set); an uploaded user gait is not
+  sim.send(loco(110), 0.1);
   EXPECT_EQ(sim.status().mode, 11);
   EXPECT_EQ(sim.status().gait_id, 1);
   EXPECT_EQ(sim.status().switch_status, SwitchStatus::BanTransition);
   const auto note = sim.machine.refusals().try_pop();
   ASSERT_TRUE(note.has_value());
-  EXPECT_STREQ(note->reason, "gait 27 (slow trot) not available yet");
+  EXPECT_STREQ(note->reason, "gait 110 (uploaded user gait) not available yet");
 }
 
 // sideways offset of the trunk from the centre of its feet (simulator truth)

@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include "app/mc.hpp"
+#include "app/simulated_robot.hpp"
 #include "core/robot_model.hpp"
 #include "modes/motor_sdk/motor_sdk_source.hpp"
 
@@ -38,7 +39,7 @@ class ExampleClient {
 
 class MotorSdkLockstep : public ::testing::Test {
  protected:
-  MotorSdkLockstep() : mc_(damper_config()), source_(MotorSdkParameters{}) {
+  MotorSdkLockstep() : mc_(make_simulated_mc(damper_config())), source_(MotorSdkParameters{}) {
     mc_.arbiter().add_low_level_source(source_);
   }
 
@@ -61,7 +62,7 @@ class MotorSdkLockstep : public ::testing::Test {
     const int ticks = static_cast<int>(seconds / mc_.loop().period_s() + 0.5);
     for (int k = 0; k < ticks; ++k) tick(client);
   }
-  double height_m() { return mc_.backend().ground_truth().position[2]; }
+  double height_m() { return mc_.simulation().ground_truth().position[2]; }
   std::uint16_t err_flag() const { return source_.status().err_flag; }
 
   Mc mc_;
@@ -107,7 +108,7 @@ TEST_F(MotorSdkLockstep, ExampleClientStandsTheRobotUpAndADeadClientLetsItLieDow
 TEST_F(MotorSdkLockstep, StandingRobotIsNotHandedOver) {
   McConfig config = default_config();
   config.startup = Startup::Stand;
-  Mc standing(config);
+  Mc standing = make_simulated_mc(config);
   MotorSdkSource source{MotorSdkParameters{}};
   standing.arbiter().add_low_level_source(source);
   for (int k = 0; k < 100; ++k) {

@@ -10,6 +10,7 @@
 #include <string>
 
 #include "app/mc.hpp"
+#include "app/simulated_robot.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_source.hpp"
 #include "shm/shm_test_client.hpp"
 #include "shm/shm_test_names.hpp"
@@ -58,7 +59,7 @@ class ShmLockstep : public ::testing::Test {
     config_.startup = startup;
     config_.shm.enabled = true;
     config_.shm.name_prefix = unique_shm_prefix();
-    mc_ = std::make_unique<Mc>(config_);
+    mc_ = std::make_unique<Mc>(config_, make_simulated_robot(config_.robot));
     log_ = std::tmpfile();
     ASSERT_NE(log_, nullptr);
     source_ = std::make_unique<ShmLowLevelSource>(config_.shm, config_.safety, log_);
@@ -75,7 +76,7 @@ class ShmLockstep : public ::testing::Test {
   }
 
   void tick() { mc_->loop().tick(); }
-  double height_m() const { return mc_->backend().ground_truth().position[2]; }
+  double height_m() const { return mc_->simulation().ground_truth().position[2]; }
   double robot_time_s() const { return mc_->backend().time_s(); }
 
   // one tick without a command, then the stand-up for duration_s, one frame per cycle

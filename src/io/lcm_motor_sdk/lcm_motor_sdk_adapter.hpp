@@ -10,8 +10,8 @@
 #include <memory>
 #include <string>
 
-#include "app/control_loop.hpp"
 #include "core/spsc_ring.hpp"
+#include "cycle/cycle_observer.hpp"
 #include "io/common/adapter_thread.hpp"
 #include "io/common/count_report.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"

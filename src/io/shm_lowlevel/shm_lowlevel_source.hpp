@@ -10,7 +10,7 @@
 #include <cstdint>
 #include <cstdio>
 
-#include "app/control_loop.hpp"
+#include "cycle/substep_participant.hpp"
 #include "modes/source_arbiter.hpp"
 #include "io/shm_lowlevel/shm_codec.hpp"
 #include "io/shm_lowlevel/shm_event_log.hpp"

@@ -9,6 +9,7 @@
 #include <thread>
 
 #include "app/mc.hpp"
+#include "app/simulated_robot.hpp"
 #include "io/highlevel/raw_lcm_peer.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
 
@@ -166,7 +167,7 @@ TEST(HighLevelClientWithMc, StandsRefusesWhatIsMissingAndLiesDown) {
   config.startup = Startup::Off;
   config.highlevel.enabled = true;
   std::FILE* log = std::tmpfile();
-  Mc mc(config);
+  Mc mc = make_simulated_mc(config);
   LcmHighLevelAdapter adapter(mc.machine(), config.highlevel, config.loop_period_s, log);
   mc.loop().add_observer(adapter);
   std::atomic<bool> stop{false};

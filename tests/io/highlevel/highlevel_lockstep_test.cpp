@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "app/mc.hpp"
+#include "app/simulated_robot.hpp"
 #include "io/highlevel/big_endian_writer.hpp"
 #include "io/highlevel/raw_lcm_peer.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
@@ -41,7 +42,7 @@ McConfig lockstep_config(double keepalive_s) {
 class HighLevelLockstep : public ::testing::Test {
  protected:
   explicit HighLevelLockstep(double keepalive_s = 0.0)
-      : config_(lockstep_config(keepalive_s)), log_(std::tmpfile()), mc_(config_),
+      : config_(lockstep_config(keepalive_s)), log_(std::tmpfile()), mc_(make_simulated_mc(config_)),
         adapter_(mc_.machine(), config_.highlevel, config_.loop_period_s, log_) {
     mc_.loop().add_observer(adapter_);
   }

@@ -1,4 +1,4 @@
-#include "viz/push_request.hpp"
+#include "backend/push_request.hpp"
 
 #include <cmath>
 

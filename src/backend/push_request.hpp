@@ -1,5 +1,6 @@
-// A push on the trunk asked for in the viewer: while active, a spring pulls the trunk's centre of
-// mass towards target_world. The loop thread turns it into a force between ticks.
+// A push on the trunk, a disturbance input of the simulation (the viewer's ctrl + drag): while
+// active, a spring pulls the trunk's centre of mass towards target_world. The simulation turns it
+// into a force at each of its physics steps.
 #pragma once
 
 #include <array>

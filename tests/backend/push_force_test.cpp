@@ -1,5 +1,5 @@
 // The viewer's push: a limited spring-damper pulling the trunk towards the mouse's target.
-#include "viz/push_request.hpp"
+#include "backend/push_request.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,0 +1,16 @@
+// The MuJoCo-simulated robot of a configuration: one object serving as the MC's backend and as
+// the tools' simulation handle, and the MC built on it.
+#pragma once
+
+#include "app/mc.hpp"
+#include "app/mc_robot.hpp"
+#include "backend/mujoco_backend.hpp"
+
+namespace cerebellum {
+
+// throws std::runtime_error naming the file when the robot model cannot be loaded
+McRobot make_simulated_robot(const MujocoBackendConfig& config);
+// the MC on the simulated robot of config.robot (the `cerebellum sim` assembly); same throws
+Mc make_simulated_mc(const McConfig& config);
+
+}  // namespace cerebellum

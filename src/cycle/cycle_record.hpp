@@ -1,0 +1,20 @@
+// What one control cycle saw and did: the loop fills it each tick and hands it to its observers.
+#pragma once
+
+#include <cstdint>
+
+#include "core/robot_state.hpp"
+#include "core/types.hpp"
+#include "safety/command_guard.hpp"
+
+namespace cerebellum {
+
+// everything one cycle saw and did
+struct CycleRecord {
+  std::uint64_t tick = 0;
+  RobotState state;
+  JointCommand command;  // as written to the robot, after the guard
+  SafetyReport safety;
+};
+
+}  // namespace cerebellum

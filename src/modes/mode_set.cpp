@@ -1,0 +1,51 @@
+#include "modes/mode_set.hpp"
+
+#include <cmath>
+#include <memory>
+
+#include "control/locomotion/gait_table.hpp"
+#include "control/qp/goldfarb_idnani_solver.hpp"
+
+namespace cerebellum {
+namespace {
+
+PureDamperConfig pure_damper_config(const ModeSetConfig& config) {
+  PureDamperConfig damper = default_pure_damper_config();
+  damper.damping_kd = config.damping_kd;
+  return damper;
+}
+
+WalkingGaitsConfig walking_config(const ModeSetConfig& config) {
+  WalkingGaitsConfig walking;
+  walking.locomotion.tick_s = config.loop_period_s;
+  walking.locomotion.ticks_per_segment = static_cast<int>(std::lround(0.03 / config.loop_period_s));
+  walking.failure_damping_kd = config.damping_kd;
+  return walking;
+}
+
+}  // namespace
+
+ModeSet::ModeSet(const ModeSetConfig& config, BodyStateEstimator* estimator)
+    : pure_damper_(pure_damper_config(config)),
+      recovery_stand_(config.stand_up),
+      lifted_(default_lifted_config()),
+      walking_(walking_config(config), std::make_unique<qp::GoldfarbIdnaniSolver>(), estimator),
+      locomotion_(gaits_) {
+  // the stepping gaits of the table run on the MPC locomotion controller; the stands on the
+  // configured one
+  LocomotionGait& stand = config.locomotion_stand == LocomotionStand::Mpc ? static_cast<LocomotionGait&>(walking_)
+                                                                          : qp_stand_gait_;
+  for (const GaitSpec& gait : kGaitTable) gaits_.add(gait.id, gait_steps(gait) ? walking_ : stand);
+}
+
+void ModeSet::add_to(HighLevelMachine& machine) {
+  machine.add_mode(off_);
+  machine.add_mode(pure_damper_);
+  machine.add_mode(recovery_stand_);
+  machine.add_mode(qp_stand_);
+  machine.add_mode(pose_control_);
+  machine.add_mode(lifted_);
+  machine.add_mode(locomotion_);
+}
+
+}  // namespace cerebellum

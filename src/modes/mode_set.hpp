@@ -1,0 +1,56 @@
+// The high-level modes and mode 11's gaits, built and registered with a state machine in one
+// place: the MC and the tests run the same set.
+#pragma once
+
+#include "control/stand_up_controller.hpp"
+#include "estimation/body_state_estimator.hpp"
+#include "modes/high_level_machine.hpp"
+#include "modes/lifted_mode.hpp"
+#include "modes/locomotion_stand.hpp"
+#include "modes/locomotion_mode.hpp"
+#include "modes/locomotion_stand_gait.hpp"
+#include "modes/passive_modes.hpp"
+#include "modes/pose_control_mode.hpp"
+#include "modes/qp_stand_mode.hpp"
+#include "modes/recovery_stand_mode.hpp"
+#include "modes/walking_gaits.hpp"
+
+namespace cerebellum {
+
+struct ModeSetConfig {
+  double loop_period_s = 0.002;
+  double damping_kd = 4.0;  // PureDamper's joint damping, and the walking gaits' when the MPC fails
+  StandUpConfig stand_up = default_stand_up_config();
+  LocomotionStand locomotion_stand = LocomotionStand::Mpc;
+};
+
+class ModeSet {
+ public:
+  // estimator (may be null): gets the walking gaits' planned contacts
+  ModeSet(const ModeSetConfig& config, BodyStateEstimator* estimator);
+  ModeSet(const ModeSet&) = delete;
+  ModeSet& operator=(const ModeSet&) = delete;
+
+  // registers every mode with the machine (which keeps pointers: this set must outlive it)
+  void add_to(HighLevelMachine& machine);
+
+  const RecoveryStandMode& recovery_stand() const { return recovery_stand_; }
+  const WalkingGaits& walking() const { return walking_; }
+  const LocomotionStandGait& qp_stand_gait() const { return qp_stand_gait_; }
+  // mode 11's gaits by id
+  const GaitRegistry& gaits() const { return gaits_; }
+
+ private:
+  OffMode off_;
+  PureDamperMode pure_damper_;
+  RecoveryStandMode recovery_stand_;
+  QpStandMode qp_stand_;
+  PoseControlMode pose_control_;
+  LiftedMode lifted_;
+  GaitRegistry gaits_;
+  WalkingGaits walking_;
+  LocomotionStandGait qp_stand_gait_;
+  LocomotionMode locomotion_;
+};
+
+}  // namespace cerebellum

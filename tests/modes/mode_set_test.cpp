@@ -1,0 +1,43 @@
+// The one assembly of the modes and gaits (the MC's and the simulation tests'): which controller
+// serves each gait id of mode 11.
+#include <gtest/gtest.h>
+
+#include "modes/mode_set.hpp"
+
+namespace cerebellum {
+namespace {
+
+constexpr int kWalkingGaitIds[] = {2, 3, 4, 7, 10, 26, 27};  // docs/locomotion.md
+constexpr int kStandGaitIds[] = {1, 31};
+
+ModeSetConfig config_with(LocomotionStand stand) {
+  ModeSetConfig config;
+  config.locomotion_stand = stand;
+  return config;
+}
+
+TEST(ModeSet, WalkingGaitsRunOnTheMpcAndTheStandsOnTheConfiguredController) {
+  for (LocomotionStand stand : {LocomotionStand::Mpc, LocomotionStand::Qp}) {
+    const ModeSet modes(config_with(stand), nullptr);
+    for (int id : kWalkingGaitIds) EXPECT_EQ(modes.gaits().find(id), &modes.walking()) << id;
+    const LocomotionGait* expected_stand = stand == LocomotionStand::Mpc
+                                               ? static_cast<const LocomotionGait*>(&modes.walking())
+                                               : &modes.qp_stand_gait();
+    for (int id : kStandGaitIds) EXPECT_EQ(modes.gaits().find(id), expected_stand) << id;
+  }
+}
+
+TEST(ModeSet, OtherGaitIdsHaveNoController) {
+  const ModeSet modes(ModeSetConfig{}, nullptr);
+  for (int id = 0; id <= GaitRegistry::kMaxGaitId; ++id) {
+    bool listed = false;
+    for (int walking : kWalkingGaitIds) listed |= walking == id;
+    for (int stand : kStandGaitIds) listed |= stand == id;
+    if (!listed) {
+      EXPECT_EQ(modes.gaits().find(id), nullptr) << id;
+    }
+  }
+}
+
+}  // namespace
+}  // namespace cerebellum
