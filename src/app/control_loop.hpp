@@ -21,6 +21,9 @@ struct CycleRecord {
   RobotState state;
   JointCommand command;  // as written to the robot, after the guard
   SafetyReport safety;
+  // the guard over the commands substep participants wrote during this tick's period (flags OR-ed;
+  // zero when none did). Filled after the observers ran: they see the previous period's here
+  SafetyReport substep_safety;
 };
 
 // sees every cycle record in the loop thread; must only copy (no I/O, no blocking)

@@ -98,7 +98,7 @@ TEST(ControlLoop, SubstepParticipantsRunEveryMillisecondAndTheirCommandsAreGuard
   EXPECT_NEAR(participant.times[1], 0.001, 1e-12);
   EXPECT_NEAR(participant.times[3], 0.003, 1e-12);
   ASSERT_EQ(l.backend.written().size(), 6u);  // per tick: control write + two substep writes
-  EXPECT_DOUBLE_EQ(l.backend.written().back().kp[0], GuardLimits{}.kp_max);
+  EXPECT_DOUBLE_EQ(l.backend.written().back().kp[0], GuardLimits{}.command.kp_max);
 }
 
 TEST(ControlLoop, RunStopsAfterTheDurationInRobotTime) {

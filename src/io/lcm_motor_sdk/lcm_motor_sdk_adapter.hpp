@@ -14,7 +14,7 @@
 #include "app/control_loop.hpp"
 #include "core/spsc_ring.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
-#include "modes/motor_sdk/motor_sdk_source.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_source.hpp"
 
 namespace lcm {
 class LCM;

@@ -5,7 +5,7 @@
 #include <cstdint>
 
 #include "core/types.hpp"
-#include "modes/motor_sdk/motor_sdk_parameters.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_parameters.hpp"
 
 namespace cerebellum {
 
@@ -22,9 +22,7 @@ struct JumpClampResult {
   std::uint32_t joints = 0;    // joints whose step was clamped
 };
 
-bool command_is_finite(const JointCommand& command);
-
-// kp 0..kp_max, kd 0..kd_max, qd_des and tau_des symmetric; q_des kept joint_limit_margin_rad
+// kp 0..kp_max, kd 0..kd_max, qd_des and tau_des symmetric (parameters.limits); q_des kept joint_limit_margin_rad
 // inside the joint range where kp > zero_tolerance (elsewhere the position does not act)
 RangeClampCount clamp_to_ranges(JointCommand& frame, const MotorSdkParameters& parameters);
 
