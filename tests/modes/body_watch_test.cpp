@@ -3,6 +3,7 @@
 // enters Lifted and being set down resumes the stand.
 #include <gtest/gtest.h>
 
+#include "core/leg_kinematics.hpp"
 #include "modes/high_level_machine.hpp"
 #include "modes/watched_modes.hpp"
 

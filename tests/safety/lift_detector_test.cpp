@@ -51,7 +51,7 @@ TEST(LiftDetection, AFreshWatchStartsItsClockAtTheFirstTick) {
   EXPECT_EQ(watch.loaded_s, 0.0);
   s.time_s += 0.05;
   EXPECT_FALSE(detect_landed(s, watch));
-  EXPECT_DOUBLE_EQ(watch.loaded_s, 0.05);
+  EXPECT_NEAR(watch.loaded_s, 0.05, 1e-12);
 }
 
 }  // namespace
