@@ -118,7 +118,7 @@ TEST(ControlLoop, TheSubstepGuardsReportIsKeptInTheCycleRecord) {
   Loop l(controller);
   l.loop.add_substep_participant(participant);
   const CycleRecord& first = l.loop.tick();
-  EXPECT_EQ(first.safety.flags, kGuardOk);  // the controller's own command was in range
+  // the substeps start from the guarded command: only what the participant did is flagged
   EXPECT_EQ(first.substep_safety.flags, kGuardClampedGain | kGuardNonFiniteCommand);
   EXPECT_TRUE(first.substep_safety.replaced());
   const CycleRecord& second = l.loop.tick();
