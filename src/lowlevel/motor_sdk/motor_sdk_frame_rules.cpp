@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/robot_model.hpp"
+#include "safety/command_clamp.hpp"
 
 namespace cerebellum {
 namespace {
@@ -19,21 +20,7 @@ bool clamp_into(double& value, double lower, double upper) {
 }  // namespace
 
 RangeClampCount clamp_to_ranges(JointCommand& frame, const MotorSdkParameters& parameters) {
-  RangeClampCount count;
-  const CommandLimits& limits = parameters.limits;
-  for (std::size_t i = 0; i < kNumJoints; ++i) {
-    const bool kp_moved = clamp_into(frame.kp[i], 0.0, limits.kp_max);
-    const bool kd_moved = clamp_into(frame.kd[i], 0.0, limits.kd_max);
-    count.gains += (kp_moved || kd_moved) ? 1 : 0;
-    count.velocities += clamp_into(frame.qd_des[i], -limits.qd_des_max_rad_s, limits.qd_des_max_rad_s);
-    count.torques += clamp_into(frame.tau_ff[i], -limits.tau_ff_max_nm, limits.tau_ff_max_nm);
-    if (frame.kp[i] > parameters.zero_tolerance) {
-      const robot::JointRange range = robot::joint_range(i);
-      count.positions += clamp_into(frame.q_des[i], range.lower + limits.joint_limit_margin_rad,
-                                    range.upper - limits.joint_limit_margin_rad);
-    }
-  }
-  return count;
+  return clamp_command(frame, parameters.limits, parameters.zero_tolerance);
 }
 
 JumpClampResult clamp_position_jumps(JointCommand& frame, const JointArray<double>& reference_q,
