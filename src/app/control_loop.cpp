@@ -44,6 +44,7 @@ const CycleRecord& ControlLoop::tick() {
 
 void ControlLoop::run_substeps() {
   const double substep_s = period_s_ / substeps_;
+  record_.substep_safety = SafetyReport{};
   for (int k = 0; k < substeps_; ++k) {
     if (!substep_participants_.empty()) {
       const SensorFrame frame = backend_.read();
@@ -51,7 +52,7 @@ void ControlLoop::run_substeps() {
       bool replaced = false;
       for (SubstepParticipant* participant : substep_participants_) replaced |= participant->on_substep(frame, command);
       if (replaced) {
-        guard_command(record_.state, command, guard_limits_);
+        record_.substep_safety.flags |= guard_command(record_.state, command, guard_limits_).flags;
         backend_.write(command);
       }
     }

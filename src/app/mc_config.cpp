@@ -8,7 +8,7 @@
 #include <sstream>
 
 #include "core/robot_model.hpp"
-#include "modes/motor_sdk/motor_sdk_user_parameters.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_user_parameters.hpp"
 
 namespace cerebellum {
 namespace {
@@ -220,11 +220,11 @@ McConfig load_config(const std::string& path) {
     const SectionReader s(root["safety"], path, "safety",
                           {"kp_max", "kd_max", "tau_ff_max_nm", "qd_des_max_rad_s", "joint_limit_margin_rad",
                            "damping_kd"});
-    s.number("kp_max", config.safety.kp_max, 0.0, 200.0);
-    s.number("kd_max", config.safety.kd_max, 0.0, 10.0);
-    s.number("tau_ff_max_nm", config.safety.tau_ff_max_nm, 0.0, robot::kTorqueMaxNm);
-    s.number("qd_des_max_rad_s", config.safety.qd_des_max_rad_s, 0.0, 30.0);
-    s.number("joint_limit_margin_rad", config.safety.joint_limit_margin_rad, 0.0, 0.3);
+    s.number("kp_max", config.safety.command.kp_max, 0.0, robot::kCommandKpMax);
+    s.number("kd_max", config.safety.command.kd_max, 0.0, robot::kCommandKdMax);
+    s.number("tau_ff_max_nm", config.safety.command.tau_ff_max_nm, 0.0, robot::kTorqueMaxNm);
+    s.number("qd_des_max_rad_s", config.safety.command.qd_des_max_rad_s, 0.0, 30.0);
+    s.number("joint_limit_margin_rad", config.safety.command.joint_limit_margin_rad, 0.0, 0.3);
     s.number("damping_kd", config.safety.damping_kd, 0.0, 10.0);
   }
   if (root["shm"]) {

@@ -77,4 +77,13 @@ inline JointArray<double> whole_body_pose(const std::array<double, 3>& leg_pose)
   return q;
 }
 
+// safety stage: the interface's foot workspace and command ranges
+// (cyberdog2-highlevel.md, cyberdog2-lowlevel.md section 5)
+// "L = 0.294 m": the interface's leg length to the foot contact (thigh + shank is 0.29391 m)
+inline constexpr double kInterfaceLegLengthM = 0.294;
+// motor command ranges: "qd_des -12..12 rad/s, kp 0..200, kd 0..10, tau_des -12..12 Nm"
+inline constexpr double kCommandKpMax = 200.0;
+inline constexpr double kCommandKdMax = 10.0;
+inline constexpr double kCommandQdDesMaxRadS = 12.0;
+
 }  // namespace cerebellum::robot

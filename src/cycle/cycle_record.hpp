@@ -15,6 +15,9 @@ struct CycleRecord {
   RobotState state;
   JointCommand command;  // as written to the robot, after the guard
   SafetyReport safety;
+  // the guard over the commands substep participants wrote during this tick's period (flags OR-ed;
+  // zero when none did). Filled after the observers ran: they see the previous period's here
+  SafetyReport substep_safety;
 };
 
 }  // namespace cerebellum

@@ -1,7 +1,8 @@
 #include "modes/high_level_machine.hpp"
 
-#include "modes/body_watch.hpp"
 #include "modes/transition_table.hpp"
+#include "modes/watched_modes.hpp"
+#include "safety/body_watch.hpp"
 
 namespace cerebellum {
 
@@ -39,7 +40,7 @@ void HighLevelMachine::switch_to(Mode& mode, const RobotState& state, const High
   current_ = &mode;
   banned_ = false;
   running_command_ = command;
-  lift_detector_.reset();
+  lift_watch_ = LiftWatch{};
   if (mode.id() == ModeId::RecoveryStand) {
     orientation_error_ = false;
     foot_position_error_ = 0;
@@ -61,20 +62,21 @@ const char* HighLevelMachine::protection_refusal(ModeId target) const {
 
 void HighLevelMachine::watch_body(const RobotState& state) {
   const ModeId id = current_->id();
+  body_report_ = SafetyReport{};
   if (id == ModeId::Lifted) {
     Mode* resume = mode_for(resume_command_.mode);
-    if (lift_detector_.landed(state) && resume != nullptr) switch_to(*resume, state, resume_command_);
+    body_report_.landed = detect_landed(state, lift_watch_, lift_config_);
+    if (body_report_.landed && resume != nullptr) switch_to(*resume, state, resume_command_);
     return;
   }
   if (!watches_body(id)) return;
   Mode* damper = mode_for(static_cast<int>(ModeId::PureDamper));
-  const bool tipped = orientation_error(state);
-  const int foot_bits = watches_feet(id) ? foot_position_error_bits(state) : 0;
-  if ((tipped || foot_bits != 0) && damper != nullptr) {
+  body_report_ = check_body(state, watches_feet(id));
+  if (body_report_.body_fault() && damper != nullptr) {
     // tipped over or a foot out of reach: damp the joints, drop the client's sequence, wait for
     // a recovery stand
-    orientation_error_ = tipped;
-    foot_position_error_ = foot_bits;
+    orientation_error_ = body_report_.orientation_error;
+    foot_position_error_ = body_report_.footpos_error;
     queue_.clear();
     applied_generation_ = queue_.generation();
     HighLevelCommand damp;
@@ -83,7 +85,8 @@ void HighLevelMachine::watch_body(const RobotState& state) {
     return;
   }
   Mode* lifted = mode_for(static_cast<int>(ModeId::Lifted));
-  if (lifted != nullptr && lift_detector_.lifted(state)) {
+  if (lifted != nullptr) body_report_.lifted = detect_lifted(state, lift_watch_, lift_config_);
+  if (body_report_.lifted) {
     resume_command_ = command_after_landing(running_command_);
     HighLevelCommand lift;
     lift.mode = static_cast<int>(ModeId::Lifted);

@@ -10,8 +10,9 @@
 #include "modes/source_arbiter.hpp"
 #include "core/spsc_ring.hpp"
 #include "modes/command_queue.hpp"
-#include "modes/lift_detector.hpp"
 #include "modes/mode.hpp"
+#include "safety/lift_detector.hpp"
+#include "safety/safety_report.hpp"
 
 namespace cerebellum {
 
@@ -55,6 +56,8 @@ class HighLevelMachine final : public OwnBehaviour {
   const CommandCounters& counters() const { return counters_; }
   // the command the running mode was entered or last updated with (loop thread)
   const HighLevelCommand& running_command() const { return running_command_; }
+  // what the body watch found this tick (loop thread)
+  const SafetyReport& body_report() const { return body_report_; }
   // refusals not yet taken by a logger (loop thread pushes, one consumer thread pops)
   SpscRing<RefusalNote, 16>& refusals() { return refusals_; }
 
@@ -81,7 +84,9 @@ class HighLevelMachine final : public OwnBehaviour {
   HighLevelStatus status_;
   bool banned_ = false;  // the last command was refused: BAN_TRANS until the next accepted one
   CommandCounters counters_;
-  LiftDetector lift_detector_;
+  LiftDetectorConfig lift_config_;
+  LiftWatch lift_watch_;              // the lift decision's memory, reset on every mode switch
+  SafetyReport body_report_;          // what safety/ found wrong this tick
   HighLevelCommand running_command_;  // what the current mode was entered or last updated with
   HighLevelCommand resume_command_;   // where a lifted robot goes once set down
   bool orientation_error_ = false;    // latched until a recovery stand starts

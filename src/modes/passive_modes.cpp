@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/robot_model.hpp"
+#include "safety/damping_command.hpp"
 
 namespace cerebellum {
 
@@ -49,8 +50,7 @@ void PureDamperMode::run(const RobotState& state, JointCommand& command) {
   elapsed_s_ = state.time_s - start_time_s_;
   command = JointCommand{};
   if (gait_ == 0) {
-    command.q_des = state.q;
-    command.kd.fill(config_.damping_kd);
+    command = damping_command(config_.damping_kd, state.q);
     return;
   }
   const double s = smooth_step(elapsed_s_ / config_.lie_down_duration_s);

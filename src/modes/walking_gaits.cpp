@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <cmath>
 
+#include "safety/damping_command.hpp"
+
 namespace cerebellum {
 
 LocomotionTarget locomotion_target_from(const LocomotionCommand& command) {
@@ -47,9 +49,7 @@ void WalkingGaits::stop() {
 void WalkingGaits::run(const RobotState& state, JointCommand& command) {
   if (failed()) {
     // no trustworthy stance forces: soft joints, the robot sinks to the ground
-    command = JointCommand{};
-    command.q_des = state.q;
-    command.kd.fill(config_.failure_damping_kd);
+    command = damping_command(config_.failure_damping_kd, state.q);
     return;
   }
   controller_.compute(state, command);

@@ -98,7 +98,31 @@ TEST(ControlLoop, SubstepParticipantsRunEveryMillisecondAndTheirCommandsAreGuard
   EXPECT_NEAR(participant.times[1], 0.001, 1e-12);
   EXPECT_NEAR(participant.times[3], 0.003, 1e-12);
   ASSERT_EQ(l.backend.written().size(), 6u);  // per tick: control write + two substep writes
-  EXPECT_DOUBLE_EQ(l.backend.written().back().kp[0], GuardLimits{}.kp_max);
+  EXPECT_DOUBLE_EQ(l.backend.written().back().kp[0], GuardLimits{}.command.kp_max);
+}
+
+TEST(ControlLoop, TheSubstepGuardsReportIsKeptInTheCycleRecord) {
+  // the participant sends an out-of-range kp on the first substep and a NaN on the second of
+  // the first tick only
+  class Participant final : public SubstepParticipant {
+   public:
+    bool on_substep(const SensorFrame&, JointCommand& command) override {
+      ++calls;
+      if (calls == 1) command.kp.fill(1000.0);
+      if (calls == 2) command.tau_ff[3] = std::nan("");
+      return calls <= 2;
+    }
+    int calls = 0;
+  } participant;
+  RecordingController controller;
+  Loop l(controller);
+  l.loop.add_substep_participant(participant);
+  const CycleRecord& first = l.loop.tick();
+  // the substeps start from the guarded command: only what the participant did is flagged
+  EXPECT_EQ(first.substep_safety.flags, kGuardClampedGain | kGuardNonFiniteCommand);
+  EXPECT_TRUE(first.substep_safety.replaced());
+  const CycleRecord& second = l.loop.tick();
+  EXPECT_EQ(second.substep_safety.flags, kGuardOk);
 }
 
 TEST(ControlLoop, RunStopsAfterTheDurationInRobotTime) {

@@ -3,9 +3,9 @@
 // enters Lifted and being set down resumes the stand.
 #include <gtest/gtest.h>
 
-#include "modes/body_watch.hpp"
+#include "core/leg_kinematics.hpp"
 #include "modes/high_level_machine.hpp"
-#include "modes/lift_detector.hpp"
+#include "modes/watched_modes.hpp"
 
 namespace cerebellum {
 namespace {
@@ -67,16 +67,11 @@ struct Machine {
   RobotState state;
 };
 
-TEST(OrientationError, IsAtOrBeyondTheLimitInRollOrPitch) {
-  RobotState s;
-  s.rpy = {1.29, 0.0, 3.0};
-  EXPECT_FALSE(orientation_error(s));
-  s.rpy = {-1.3, 0.0, 0.0};
-  EXPECT_TRUE(orientation_error(s));
-  s.rpy = {0.0, 1.31, 0.0};
-  EXPECT_TRUE(orientation_error(s));
+TEST(WatchedModes, AreTheModesThatStandOnTheirFeet) {
   EXPECT_TRUE(watches_body(ModeId::QpStand) && watches_body(ModeId::Locomotion) && watches_body(ModeId::PoseControl));
   EXPECT_FALSE(watches_body(ModeId::RecoveryStand) || watches_body(ModeId::PureDamper) || watches_body(ModeId::Off));
+  EXPECT_TRUE(watches_feet(ModeId::Locomotion));
+  EXPECT_FALSE(watches_feet(ModeId::QpStand) || watches_feet(ModeId::PoseControl));
 }
 
 TEST(BodyWatch, TippingOverInAStandingModeLatchesAnEmergencyStopUntilARecoveryStand) {
@@ -164,71 +159,6 @@ TEST(BodyWatch, PoseControlResumesAsQpStandAfterALift) {
   EXPECT_EQ(after.contact, 0x0F);
   EXPECT_EQ(after.duration, 0);
   EXPECT_EQ(command_after_landing(cmd(ModeId::Locomotion, 31, 5)).gait_id, 31);
-}
-
-TEST(LiftDetector, NeedsUnloadedFeetSupportAndRiseTogether) {
-  LiftDetector detector;
-  RobotState s;
-  s.contact = {0, 0, 0, 0};
-  // supported but not rising (lying on the belly): never
-  for (int i = 0; i < 500; ++i, s.time_s += 0.002) EXPECT_FALSE(detector.lifted(s));
-  // rising at 2 m/s^2 with unloaded feet: after the rise threshold and 0.1 s unloaded
-  detector.reset();
-  s.accel_world = {0.0, 0.0, 2.0};
-  double lifted_at = -1.0;
-  const double start = s.time_s;
-  for (int i = 0; i < 500 && lifted_at < 0.0; ++i, s.time_s += 0.002) {
-    if (detector.lifted(s)) lifted_at = s.time_s - start;
-  }
-  // 0.2 m/s at 2 m/s^2 (less the leak) takes a little over 0.1 s
-  EXPECT_GT(lifted_at, 0.098);
-  EXPECT_LT(lifted_at, 0.15);
-  // one loaded foot resets the count
-  detector.reset();
-  s.contact = {1, 0, 0, 0};
-  for (int i = 0; i < 500; ++i, s.time_s += 0.002) EXPECT_FALSE(detector.lifted(s));
-}
-
-TEST(LiftDetector, LandsWithThreeLoadedFeetHeldForATenthOfASecond) {
-  LiftDetector detector;
-  RobotState s;
-  s.contact = {1, 1, 0, 0};
-  for (int i = 0; i < 100; ++i, s.time_s += 0.002) EXPECT_FALSE(detector.landed(s));
-  s.contact = {1, 1, 1, 0};
-  int ticks = 0;
-  while (!detector.landed(s) && ticks < 1000) ++ticks, s.time_s += 0.002;
-  EXPECT_NEAR(ticks, 50, 1);
-}
-
-}  // namespace
-}  // namespace cerebellum
-
-namespace cerebellum {
-namespace {
-
-RobotState standing_feet() {
-  RobotState state;
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    state.foot_position_body[leg] = foot_position_in_body(leg, Vec3(0.0, 0.785, -1.22));
-  }
-  return state;
-}
-
-TEST(FootWorkspace, BoundsAreTheInterfaceFormulas) {
-  const FootWorkspace w;
-  EXPECT_NEAR(w.forward_m, 0.2546, 1e-4);
-  EXPECT_NEAR(w.lateral_m, 0.294 * 0.62879 + 0.094 * 0.77757, 1e-4);
-  EXPECT_NEAR(w.lowest_m, -0.3087, 1e-4);
-  EXPECT_NEAR(w.highest_m, -0.049, 1e-6);
-}
-
-TEST(FootWorkspace, StandingFeetAreInsideAndEachAxisHasItsBit) {
-  EXPECT_EQ(foot_position_error_bits(standing_feet()), 0);
-  RobotState state = standing_feet();
-  state.foot_position_body[0].x() += 0.3;   // FR forward
-  state.foot_position_body[1].y() += 0.3;   // FL lateral
-  state.foot_position_body[3].z() = -0.02;  // RL too high
-  EXPECT_EQ(foot_position_error_bits(state), (1 << 0) | (1 << 4) | (1 << 11));
 }
 
 }  // namespace

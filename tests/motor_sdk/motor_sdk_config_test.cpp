@@ -6,7 +6,7 @@
 #include <string>
 
 #include "app/mc_config.hpp"
-#include "modes/motor_sdk/motor_sdk_user_parameters.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_user_parameters.hpp"
 
 namespace cerebellum {
 namespace {

@@ -6,7 +6,7 @@
 #include "app/mc.hpp"
 #include "app/simulated_robot.hpp"
 #include "core/robot_model.hpp"
-#include "modes/motor_sdk/motor_sdk_source.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_source.hpp"
 
 namespace cerebellum {
 namespace {

@@ -14,6 +14,16 @@ RobotState valid_state() {
   return state;
 }
 
+TEST(CommandLimits, DefaultsAreTheMotorCommandRangesOfTheReference) {
+  // cyberdog2-lowlevel.md section 5: qd_des -12..12 rad/s, kp 0..200, kd 0..10, tau_des -12..12 Nm
+  const CommandLimits limits;
+  EXPECT_EQ(limits.kp_max, 200.0);
+  EXPECT_EQ(limits.kd_max, 10.0);
+  EXPECT_EQ(limits.qd_des_max_rad_s, 12.0);
+  EXPECT_EQ(limits.tau_ff_max_nm, 12.0);
+  EXPECT_EQ(limits.joint_limit_margin_rad, 0.04);
+}
+
 TEST(CommandGuard, InRangeCommandPassesUntouched) {
   JointCommand command;
   command.kp.fill(60.0);

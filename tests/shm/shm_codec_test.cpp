@@ -101,7 +101,7 @@ TEST(ShmCodec, ValidFrameBecomesTheCommandWithoutSignFlip) {
   fill_command(legs);
   legs[BACK_RIGHT].foot.kp = std::numeric_limits<float>::quiet_NaN();  // the foot is not read
   JointCommand command;
-  const ShmCommandCheck check = decode_shm_command(legs, ShmGainBounds{}, command);
+  const ShmCommandCheck check = decode_shm_command(legs, CommandLimits{}, command);
   ASSERT_TRUE(check.ok());
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     EXPECT_EQ(command.q_des[i], static_cast<float>(i) / 10.0f) << i;
@@ -137,7 +137,7 @@ TEST_P(ShmCodecRejects, TheWholeFrameAndNamesTheFirstBadValue) {
   }
   JointCommand command;
   command.kp.fill(-7.0);  // a marker: a rejected frame must not touch the command
-  const ShmCommandCheck check = decode_shm_command(legs, ShmGainBounds{200.0, 10.0}, command);
+  const ShmCommandCheck check = decode_shm_command(legs, CommandLimits{}, command);
   EXPECT_EQ(check.fault, bad.fault);
   EXPECT_EQ(check.joint, 3 * bad.leg + bad.joint);
   EXPECT_EQ(check.field, bad.field);
@@ -168,14 +168,9 @@ TEST(ShmCodec, GainsOnTheBoundsAreAccepted) {
   legs[BACK_LEFT].knee.kp = 0.0f;
   legs[BACK_LEFT].knee.kd = 0.0f;
   JointCommand command;
-  EXPECT_TRUE(decode_shm_command(legs, ShmGainBounds{200.0, 10.0}, command).ok());
+  EXPECT_TRUE(decode_shm_command(legs, CommandLimits{}, command).ok());
   EXPECT_EQ(command.kp[0], 200.0);
   EXPECT_EQ(command.kd[0], 10.0);
-}
-
-TEST(ShmCodec, FieldNames) {
-  EXPECT_STREQ(shm_command_field_name(ShmCommandField::PDes), "p_des");
-  EXPECT_STREQ(shm_command_field_name(ShmCommandField::TFf), "t_ff");
 }
 
 }  // namespace

@@ -15,7 +15,7 @@
 #include "io/common/adapter_thread.hpp"
 #include "io/common/count_report.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
-#include "modes/motor_sdk/motor_sdk_source.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_source.hpp"
 
 namespace lcm {
 class LCM;

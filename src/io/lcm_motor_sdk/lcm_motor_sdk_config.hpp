@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "modes/motor_sdk/motor_sdk_parameters.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_parameters.hpp"
 
 namespace cerebellum {
 

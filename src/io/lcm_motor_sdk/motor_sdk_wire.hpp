@@ -8,7 +8,7 @@
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "io/lcm_common/lcm_packet.hpp"
-#include "modes/motor_sdk/motor_sdk_source.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_source.hpp"
 #include "motor_ctrl_lcmt.hpp"
 #include "motor_ctrl_state_lcmt.hpp"
 #include "spi_data_t.hpp"

@@ -22,15 +22,6 @@ const joint_control_t& joint_in(const leg_control_t& leg, std::size_t joint) {
   }
 }
 
-ShmCommandCheck fault_at(ShmCommandFault fault, std::size_t joint, ShmCommandField field, double value) {
-  ShmCommandCheck check;
-  check.fault = fault;
-  check.joint = joint;
-  check.field = field;
-  check.value = value;
-  return check;
-}
-
 }  // namespace
 
 std::int32_t shm_joint_state_flags(double temperature_c) {
@@ -68,50 +59,24 @@ void encode_shm_imu(const SensorFrame& frame, nav_imu_t& imu) {
   for (std::size_t k = 0; k < 4; ++k) imu.q[k] = static_cast<float>(frame.imu_quat[k]);
 }
 
-ShmCommandCheck decode_shm_command(const leg_control_t (&legs)[kNumLegs], const ShmGainBounds& bounds,
+ShmCommandCheck decode_shm_command(const leg_control_t (&legs)[kNumLegs], const CommandLimits& limits,
                                    JointCommand& command) {
   // check the whole frame before touching the command
+  JointCommand decoded;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     for (std::size_t joint = 0; joint < kJointsPerLeg; ++joint) {
       const std::size_t i = joint_index(leg, joint);
       const joint_control_t& in = joint_in(legs[leg], joint);
-      const double values[] = {in.p_des, in.v_des, in.kp, in.kd, in.t_ff};
-      for (std::size_t f = 0; f < 5; ++f) {
-        if (!std::isfinite(values[f])) {
-          return fault_at(ShmCommandFault::NonFinite, i, static_cast<ShmCommandField>(f), values[f]);
-        }
-      }
-      if (in.kp < 0.0f || in.kp > bounds.kp_max) {
-        return fault_at(ShmCommandFault::GainOutOfRange, i, ShmCommandField::Kp, in.kp);
-      }
-      if (in.kd < 0.0f || in.kd > bounds.kd_max) {
-        return fault_at(ShmCommandFault::GainOutOfRange, i, ShmCommandField::Kd, in.kd);
-      }
+      decoded.q_des[i] = in.p_des;
+      decoded.qd_des[i] = in.v_des;
+      decoded.kp[i] = in.kp;
+      decoded.kd[i] = in.kd;
+      decoded.tau_ff[i] = in.t_ff;
     }
   }
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    for (std::size_t joint = 0; joint < kJointsPerLeg; ++joint) {
-      const std::size_t i = joint_index(leg, joint);
-      const joint_control_t& in = joint_in(legs[leg], joint);
-      command.q_des[i] = in.p_des;
-      command.qd_des[i] = in.v_des;
-      command.kp[i] = in.kp;
-      command.kd[i] = in.kd;
-      command.tau_ff[i] = in.t_ff;
-    }
-  }
-  return {};
-}
-
-const char* shm_command_field_name(ShmCommandField field) {
-  switch (field) {
-    case ShmCommandField::PDes: return "p_des";
-    case ShmCommandField::VDes: return "v_des";
-    case ShmCommandField::Kp: return "kp";
-    case ShmCommandField::Kd: return "kd";
-    case ShmCommandField::TFf: return "t_ff";
-  }
-  return "?";
+  const ShmCommandCheck check = check_shm_command(decoded, limits);
+  if (check.ok()) command = decoded;
+  return check;
 }
 
 }  // namespace cerebellum

@@ -7,6 +7,8 @@
 
 #include "core/types.hpp"
 #include "lowlevel/lowlevel.h"
+#include "lowlevel/shm/shm_command_rules.hpp"
+#include "safety/command_limits.hpp"
 
 namespace cerebellum {
 
@@ -21,29 +23,9 @@ void encode_shm_legs(const SensorFrame& frame, leg_state_t (&legs)[kNumLegs]);
 void encode_shm_imu(const SensorFrame& frame, nav_imu_t& imu);
 std::uint64_t shm_timestamp_ns(double time_s);
 
-enum class ShmCommandFault { None, NonFinite, GainOutOfRange };
-enum class ShmCommandField { PDes, VDes, Kp, Kd, TFf };
-
-// why a command frame was rejected: the first offending value
-struct ShmCommandCheck {
-  ShmCommandFault fault = ShmCommandFault::None;
-  std::size_t joint = 0;  // joint_index order
-  ShmCommandField field = ShmCommandField::PDes;
-  double value = 0.0;
-  bool ok() const { return fault == ShmCommandFault::None; }
-};
-
-// gains outside these bounds are a client bug, not something to clamp
-struct ShmGainBounds {
-  double kp_max = 200.0;
-  double kd_max = 10.0;
-};
-
-// cmd.legs -> command (the foot entries and leg flags are not read). Rejects the frame when a
-// value is NaN/Inf or a gain is negative or above its bound; command is then left untouched.
-ShmCommandCheck decode_shm_command(const leg_control_t (&legs)[kNumLegs], const ShmGainBounds& bounds,
+// cmd.legs -> command (the foot entries and leg flags are not read). Rejects the frame when it
+// breaks the command rules (lowlevel/shm/shm_command_rules.hpp); command is then left untouched.
+ShmCommandCheck decode_shm_command(const leg_control_t (&legs)[kNumLegs], const CommandLimits& limits,
                                    JointCommand& command);
-
-const char* shm_command_field_name(ShmCommandField field);
 
 }  // namespace cerebellum

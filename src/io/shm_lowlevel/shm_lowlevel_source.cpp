@@ -4,6 +4,8 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "safety/damping_command.hpp"
+
 namespace cerebellum {
 namespace {
 
@@ -18,13 +20,6 @@ std::atomic_ref<T> atomic_at(void* base, std::size_t offset_bytes) {
   return std::atomic_ref<T>(*reinterpret_cast<T*>(static_cast<char*>(base) + offset_bytes));
 }
 
-// kp 0, tau 0, kd damping_kd: the motors brake the joints and the robot sinks down
-void damping_into(const SensorFrame& frame, double damping_kd, JointCommand& command) {
-  command = JointCommand{};
-  command.q_des = frame.q;
-  command.kd.fill(damping_kd);
-}
-
 const ShmLowLevelConfig& checked(const ShmLowLevelConfig& config) {
   if (config.command_timeout_cycles < 1) throw std::invalid_argument("shm: command_timeout_cycles must be >= 1");
   return config;
@@ -34,13 +29,13 @@ const ShmLowLevelConfig& checked(const ShmLowLevelConfig& config) {
 
 ShmLowLevelSource::ShmLowLevelSource(const ShmLowLevelConfig& config, const GuardLimits& limits, std::FILE* log)
     : config_(checked(config)),
-      gain_bounds_{limits.kp_max, limits.kd_max},
+      command_limits_(limits.command),
       damping_kd_(limits.damping_kd),
       spline_(shm_spline_object_name(config.name_prefix), LOWLEVEL_SPLINE_SHM_SIZE, config.mode),
       imu_(shm_imu_object_name(config.name_prefix), LOWLEVEL_IMU_SHM_SIZE, config.mode),
       log_(log),
       log_file_(log) {
-  active_.kd.fill(damping_kd_);
+  active_ = damping_command(damping_kd_);
   std::fprintf(log_file_, "cerebellum shm: serving %s and %s (mode %04o), 1 ms updates\n", spline_.name().c_str(),
                imu_.name().c_str(), config_.mode);
 }
@@ -89,7 +84,7 @@ void ShmLowLevelSource::take_command(const SensorFrame& frame) {
   // the release orders the copy before the clear: a client that sees 0 may write the next frame
   command_flag().store(0, std::memory_order_release);
 
-  const ShmCommandCheck check = decode_shm_command(command_legs_, gain_bounds_, decoded_);
+  const ShmCommandCheck check = decode_shm_command(command_legs_, command_limits_, decoded_);
   if (!check.ok()) {
     frames_rejected_.fetch_add(1, std::memory_order_relaxed);
     ShmEvent event;
@@ -121,7 +116,8 @@ void ShmLowLevelSource::note_missed_cycle(const SensorFrame& frame) {
   command_active_ = false;
   timed_out_ = true;
   refusal_reported_ = false;
-  damping_into(frame, damping_kd_, active_);
+  // the motors brake the joints and the robot sinks down
+  active_ = damping_command(damping_kd_, frame.q);
   command_timeouts_.fetch_add(1, std::memory_order_relaxed);
   ShmEvent event;
   event.kind = ShmEventKind::CommandTimedOut;

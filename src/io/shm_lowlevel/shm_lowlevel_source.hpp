@@ -73,7 +73,7 @@ class ShmLowLevelSource final : public LowLevelSource, public SubstepParticipant
   std::atomic_ref<std::size_t> imu_timestamp() const;
 
   ShmLowLevelConfig config_;
-  ShmGainBounds gain_bounds_;
+  CommandLimits command_limits_;  // a frame outside them is rejected
   double damping_kd_;
   ShmRegion spline_;
   ShmRegion imu_;

@@ -1,4 +1,4 @@
-#include "modes/motor_sdk/motor_sdk_user_parameters.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_user_parameters.hpp"
 
 #include <yaml-cpp/yaml.h>
 

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "core/robot_model.hpp"
+#include "safety/command_limits.hpp"
 
 namespace cerebellum {
 
@@ -31,11 +32,7 @@ struct MotorSdkParameters {
   bool position_mutation_limit = true;
   std::array<double, 3> max_position_step_rad{robot::deg(8.0), robot::deg(10.0), robot::deg(12.0)};
   // accepted ranges; values outside are clamped and counted
-  double kp_max = 200.0;
-  double kd_max = 10.0;
-  double qd_des_max_rad_s = 12.0;
-  double tau_des_max_nm = 12.0;
-  double joint_limit_margin_rad = 0.04;
+  CommandLimits limits;
 };
 
 }  // namespace cerebellum

@@ -1,9 +1,10 @@
-#include "modes/motor_sdk/motor_sdk_frame_rules.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_frame_rules.hpp"
 
 #include <algorithm>
 #include <cmath>
 
 #include "core/robot_model.hpp"
+#include "safety/command_clamp.hpp"
 
 namespace cerebellum {
 namespace {
@@ -16,33 +17,10 @@ bool clamp_into(double& value, double lower, double upper) {
   return moved;
 }
 
-template <typename Array>
-bool all_finite(const Array& values) {
-  return std::all_of(values.begin(), values.end(), [](double v) { return std::isfinite(v); });
-}
-
 }  // namespace
 
-bool command_is_finite(const JointCommand& command) {
-  return all_finite(command.q_des) && all_finite(command.qd_des) && all_finite(command.kp) &&
-         all_finite(command.kd) && all_finite(command.tau_ff);
-}
-
 RangeClampCount clamp_to_ranges(JointCommand& frame, const MotorSdkParameters& parameters) {
-  RangeClampCount count;
-  for (std::size_t i = 0; i < kNumJoints; ++i) {
-    const bool kp_moved = clamp_into(frame.kp[i], 0.0, parameters.kp_max);
-    const bool kd_moved = clamp_into(frame.kd[i], 0.0, parameters.kd_max);
-    count.gains += (kp_moved || kd_moved) ? 1 : 0;
-    count.velocities += clamp_into(frame.qd_des[i], -parameters.qd_des_max_rad_s, parameters.qd_des_max_rad_s);
-    count.torques += clamp_into(frame.tau_ff[i], -parameters.tau_des_max_nm, parameters.tau_des_max_nm);
-    if (frame.kp[i] > parameters.zero_tolerance) {
-      const robot::JointRange range = robot::joint_range(i);
-      count.positions += clamp_into(frame.q_des[i], range.lower + parameters.joint_limit_margin_rad,
-                                    range.upper - parameters.joint_limit_margin_rad);
-    }
-  }
-  return count;
+  return clamp_command(frame, parameters.limits, parameters.zero_tolerance);
 }
 
 JumpClampResult clamp_position_jumps(JointCommand& frame, const JointArray<double>& reference_q,

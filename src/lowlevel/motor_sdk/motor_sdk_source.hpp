@@ -17,8 +17,8 @@
 #include <cstdint>
 
 #include "modes/source_arbiter.hpp"
-#include "modes/motor_sdk/motor_sdk_mailbox.hpp"
-#include "modes/motor_sdk/motor_sdk_parameters.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_mailbox.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_parameters.hpp"
 
 namespace cerebellum {
 

@@ -5,27 +5,21 @@
 #include <cstdint>
 
 #include "core/types.hpp"
-#include "modes/motor_sdk/motor_sdk_parameters.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_parameters.hpp"
+#include "safety/command_clamp.hpp"
 
 namespace cerebellum {
 
 // how many joints had each quantity clamped in one frame
-struct RangeClampCount {
-  std::uint32_t gains = 0;       // kp or kd
-  std::uint32_t velocities = 0;  // qd_des
-  std::uint32_t torques = 0;     // tau_des
-  std::uint32_t positions = 0;   // q_des outside the joint limits (only where kp acts)
-};
+using RangeClampCount = CommandClampCount;
 
 struct JumpClampResult {
   std::uint16_t err_bits = 0;  // kMotorSdkAbadJump / HipJump / KneeJump
   std::uint32_t joints = 0;    // joints whose step was clamped
 };
 
-bool command_is_finite(const JointCommand& command);
-
-// kp 0..kp_max, kd 0..kd_max, qd_des and tau_des symmetric; q_des kept joint_limit_margin_rad
-// inside the joint range where kp > zero_tolerance (elsewhere the position does not act)
+// the shared clamp (safety/command_clamp.hpp) into parameters.limits; q_des only where
+// kp > zero_tolerance (elsewhere the position does not act)
 RangeClampCount clamp_to_ranges(JointCommand& frame, const MotorSdkParameters& parameters);
 
 // limits each acting joint's q_des to reference +- max_position_step_rad of its joint type

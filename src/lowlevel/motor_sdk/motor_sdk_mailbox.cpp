@@ -1,8 +1,8 @@
-#include "modes/motor_sdk/motor_sdk_mailbox.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_mailbox.hpp"
 
 #include <cmath>
 
-#include "modes/motor_sdk/motor_sdk_frame_rules.hpp"
+#include "safety/command_finite.hpp"
 
 namespace cerebellum {
 

@@ -1,11 +1,11 @@
 // Picked up or set down? While a standing mode runs: the robot counts as lifted when no foot
 // carries load and the body is held up or pulled up (the IMU's vertical specific force stays
 // well above free fall) and has risen (vertical speed integrated from the IMU). While lifted:
-// it counts as set down again once enough feet carry load.
+// it counts as set down again once enough feet carry load. The caller owns the small state the
+// integrals need (LiftWatch) and resets it when the mode changes.
 #pragma once
 
 #include "core/robot_state.hpp"
-#include "modes/high_level_command.hpp"
 
 namespace cerebellum {
 
@@ -19,29 +19,19 @@ struct LiftDetectorConfig {
   double landed_time_s = 0.1;
 };
 
-class LiftDetector {
- public:
-  explicit LiftDetector(const LiftDetectorConfig& config = {});
-  void reset();
-  // one tick of a standing mode: true once the robot has been picked up
-  bool lifted(const RobotState& state);
-  // one tick while lifted: true once the feet carry the robot again
-  bool landed(const RobotState& state);
-
- private:
-  double step_s(const RobotState& state);
-
-  LiftDetectorConfig config_;
-  double last_time_s_ = 0.0;
-  bool has_time_ = false;
-  double unloaded_s_ = 0.0;
-  double rise_speed_m_s_ = 0.0;
-  double rise_m_ = 0.0;
-  double loaded_s_ = 0.0;
+// what the lift decision remembers from tick to tick
+struct LiftWatch {
+  double last_time_s = 0.0;
+  bool has_time = false;
+  double unloaded_s = 0.0;
+  double rise_speed_m_s = 0.0;
+  double rise_m = 0.0;
+  double loaded_s = 0.0;
 };
 
-// the command the MC resumes with when the robot is set down after a lift in `lifted_from`:
-// QP stand and locomotion stand as they were (walking gaits stand first), pose control -> QP stand
-HighLevelCommand command_after_landing(const HighLevelCommand& lifted_from);
+// one tick of a standing mode: true once the robot has been picked up
+bool detect_lifted(const RobotState& state, LiftWatch& watch, const LiftDetectorConfig& config = {});
+// one tick while lifted: true once the feet carry the robot again
+bool detect_landed(const RobotState& state, LiftWatch& watch, const LiftDetectorConfig& config = {});
 
 }  // namespace cerebellum

@@ -1,6 +1,7 @@
-#include "modes/motor_sdk/motor_sdk_source.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_source.hpp"
 
-#include "modes/motor_sdk/motor_sdk_frame_rules.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_frame_rules.hpp"
+#include "safety/damping_command.hpp"
 
 namespace cerebellum {
 namespace {
@@ -58,10 +59,8 @@ void MotorSdkSource::compute(const RobotState& state, JointCommand& command) {
 
   if (status_.err_flag & kMotorSdkCommandLost) {
     // damping lets the robot sink and lie down; limp once it has had time to
-    command = passive_command();
-    if (now_s - lost_since_s_ < parameters_.lost_damping_duration_s - kTimeToleranceS) {
-      command.kd.fill(parameters_.lost_damping_kd);
-    }
+    const bool damping = now_s - lost_since_s_ < parameters_.lost_damping_duration_s - kTimeToleranceS;
+    command = damping ? damping_command(parameters_.lost_damping_kd) : passive_command();
     return;
   }
   command = active_;

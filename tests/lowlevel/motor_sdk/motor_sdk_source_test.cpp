@@ -1,6 +1,6 @@
 // The MC side of the motor SDK without sockets: every err_flag bit, the activation, the clamps
 // and the rejection of bad frames, driven tick by tick in robot time.
-#include "modes/motor_sdk/motor_sdk_source.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_source.hpp"
 
 #include <gtest/gtest.h>
 
