@@ -19,7 +19,8 @@ namespace cerebellum {
 struct CycleRecord {
   std::uint64_t tick = 0;
   RobotState state;
-  JointCommand command;  // as written to the robot, after the guard
+  JointCommand command;      // as written to the robot, after the guard
+  ContactPlan contact_plan;  // planned by the control stage, for the estimator at the next tick
   SafetyReport safety;
 };
 

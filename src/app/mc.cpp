@@ -38,7 +38,7 @@ Mc::Mc(const McConfig& config)
       pure_damper_(pure_damper_config(config)),
       recovery_stand_(config.stand_up),
       lifted_(default_lifted_config()),
-      walking_(walking_config(config), std::make_unique<qp::GoldfarbIdnaniSolver>(), &estimator_),
+      walking_(walking_config(config), std::make_unique<qp::GoldfarbIdnaniSolver>()),
       locomotion_(gaits_),
       machine_(config.loop_period_s, startup_command(config.startup)),
       arbiter_(machine_),

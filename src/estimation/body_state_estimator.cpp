@@ -44,16 +44,20 @@ void BodyStateEstimator::reset() {
   ground_z_m_ = 0.0;
 }
 
-bool BodyStateEstimator::set_contact_schedule(const ContactSchedule& schedule) {
-  for (const LegContactPlan& plan : schedule) {
-    if (!std::isfinite(plan.probability) || !std::isfinite(plan.stance_phase)) return false;
+void BodyStateEstimator::follow_plan(const ContactPlan& plan) {
+  if (!plan) {
+    schedule_.reset();
+    return;
   }
-  schedule_ = schedule;
-  return true;
+  for (const LegContactPlan& leg : *plan) {
+    if (!std::isfinite(leg.probability) || !std::isfinite(leg.stance_phase)) return;
+  }
+  schedule_ = plan;
 }
 
-void BodyStateEstimator::update(const SensorFrame& frame, RobotState& state) {
-  kinematic_.update(frame, state);
+void BodyStateEstimator::update(const SensorFrame& frame, const ContactPlan& plan, RobotState& state) {
+  follow_plan(plan);
+  kinematic_.update(frame, plan, state);
   if (!state.valid) {
     if (filter_.initialized()) write_state(state);
     return;
@@ -140,6 +144,7 @@ void BodyStateEstimator::write_state(RobotState& state) {
   }
   if (trust_sum >= kMinGroundTrust) ground_z_m_ = weighted_foot_z / trust_sum;
   state.height_m = state.position_world.z() - ground_z_m_;
+  state.ground = ground_.plane();
 }
 
 }  // namespace cerebellum

@@ -57,12 +57,4 @@ void GroundPlaneTracker::update(const std::array<Eigen::Vector3d, kNumLegs>& fee
   plane_.gradient = slope > 0.0 ? Eigen::Vector2d(raw_gradient_ * (kept / slope)) : Eigen::Vector2d::Zero();
 }
 
-double GroundPlaneTracker::pitch_along(double yaw) const {
-  return -std::atan(plane_.gradient.dot(Eigen::Vector2d(std::cos(yaw), std::sin(yaw))));
-}
-
-double GroundPlaneTracker::roll_along(double yaw) const {
-  return std::atan(plane_.gradient.dot(Eigen::Vector2d(-std::sin(yaw), std::cos(yaw))));
-}
-
 }  // namespace cerebellum

@@ -69,10 +69,10 @@ TEST(GroundPlaneTracker, ConvergesToA10DegreeRampAndGivesItsPitch) {
   EXPECT_NEAR(plane.gradient.y(), 0.0, 1e-9);
   EXPECT_NEAR(plane.height_at(1.5, 0.0), -0.1 + slope * 1.5, 1e-9);  // through the feet's centroid
   const double angle = std::atan(plane.gradient.x());
-  EXPECT_NEAR(tracker.pitch_along(0.0), -angle, 1e-12);  // uphill ahead: nose up
-  EXPECT_NEAR(tracker.pitch_along(M_PI), angle, 1e-12);
-  EXPECT_NEAR(tracker.roll_along(M_PI / 2), -angle, 1e-12);  // ground rises to the right
-  EXPECT_NEAR(tracker.roll_along(0.0), 0.0, 1e-12);
+  EXPECT_NEAR(tracker.plane().pitch_along(0.0), -angle, 1e-12);  // uphill ahead: nose up
+  EXPECT_NEAR(tracker.plane().pitch_along(M_PI), angle, 1e-12);
+  EXPECT_NEAR(tracker.plane().roll_along(M_PI / 2), -angle, 1e-12);  // ground rises to the right
+  EXPECT_NEAR(tracker.plane().roll_along(0.0), 0.0, 1e-12);
 }
 
 TEST(GroundPlaneTracker, SmallSlopesReadFlatAndSteepOnesAreClamped) {
