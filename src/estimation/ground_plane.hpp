@@ -30,12 +30,20 @@ class GroundPlaneTracker {
   // feet_world: foot contact points (world); planted: legs in stance for a while, whose points
   // replace the stored ones
   void update(const std::array<Eigen::Vector3d, kNumLegs>& feet_world, const std::array<bool, kNumLegs>& planted,
+              double dt_s) {
+    update(feet_world, feet_world, planted, dt_s);
+  }
+  // the same with two estimates of the contact points: the slope from one (their differences),
+  // the height the plane passes through from the other
+  void update(const std::array<Eigen::Vector3d, kNumLegs>& slope_points,
+              const std::array<Eigen::Vector3d, kNumLegs>& height_points, const std::array<bool, kNumLegs>& planted,
               double dt_s);
   const GroundPlane& plane() const { return plane_; }
 
  private:
   GroundPlaneTrackerConfig config_;
-  std::array<Eigen::Vector3d, kNumLegs> planted_{};
+  std::array<Eigen::Vector3d, kNumLegs> planted_slope_{};
+  std::array<Eigen::Vector3d, kNumLegs> planted_height_{};
   Eigen::Vector2d raw_gradient_ = Eigen::Vector2d::Zero();  // low-passed fit, before deadband
   GroundPlane plane_;
 };
