@@ -116,7 +116,7 @@ void BM_BodyStateEstimatorUpdate(benchmark::State& bench) {
   RobotState state;
   for (auto _ : bench) {
     frame.time_s += 0.002;
-    estimator.update(frame, state);
+    estimator.update(frame, std::nullopt, state);
     benchmark::DoNotOptimize(state.position_world.data());
   }
 }

@@ -28,10 +28,13 @@ void ControlLoop::add_substep_participant(SubstepParticipant& participant) {
 const CycleRecord& ControlLoop::tick() {
   // read
   const SensorFrame frame = backend_.read();
-  // estimate
-  estimator_.update(frame, record_.state);
-  // decide and control: an invalid state gets no command from the controller
-  if (record_.state.valid) controller_.compute(record_.state, record_.command);
+  // estimate, with the contacts the control stage planned last tick
+  estimator_.update(frame, record_.contact_plan, record_.state);
+  // decide and control: an invalid state gets no command (and no new plan) from the controller
+  if (record_.state.valid) {
+    controller_.compute(record_.state, record_.command);
+    record_.contact_plan = controller_.contact_plan();
+  }
   // guard, always last
   record_.safety = guard_command(record_.state, record_.command, guard_limits_);
   // write, then the robot runs one period

@@ -34,7 +34,7 @@ Mc::Mc(const McConfig& config, McRobot robot)
     : config_(config),
       backend_(std::move(robot.backend)),
       simulation_(robot.simulation),
-      modes_(mode_set_config(config), &estimator_),
+      modes_(mode_set_config(config)),
       machine_(config.loop_period_s, startup_command(config.startup)),
       arbiter_(machine_),
       loop_(require_backend(backend_), estimator_, arbiter_, config.safety, config.loop_period_s) {

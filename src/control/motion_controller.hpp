@@ -1,6 +1,8 @@
-// The decide + control stage of the cycle: robot state in, joint command out.
+// The decide + control stage of the cycle: robot state in, joint command (and the contacts it
+// plans, for the estimator at the next tick) out.
 #pragma once
 
+#include "core/contact_plan.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 
@@ -11,6 +13,8 @@ class MotionController {
   virtual ~MotionController() = default;
   // called every tick, in the loop thread; must not block, allocate or print
   virtual void compute(const RobotState& state, JointCommand& command) = 0;
+  // the contacts the last compute() planned for the next tick; none unless a gait steps
+  virtual ContactPlan contact_plan() const { return std::nullopt; }
 };
 
 }  // namespace cerebellum

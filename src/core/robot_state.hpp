@@ -5,6 +5,7 @@
 #include <Eigen/Geometry>
 #include <array>
 
+#include "core/ground_plane.hpp"
 #include "core/types.hpp"
 
 namespace cerebellum {
@@ -28,6 +29,8 @@ struct RobotState {
   Eigen::Vector3d velocity_body = Eigen::Vector3d::Zero();
   // trunk height above the ground under the stance feet (m)
   double height_m = 0.0;
+  // the ground plane through the recently planted feet (world)
+  GroundPlane ground;
   // per leg: foot position in the body frame and contact probability 0..1
   std::array<Eigen::Vector3d, kNumLegs> foot_position_body{};
   std::array<double, kNumLegs> contact{};

@@ -3,6 +3,7 @@
 
 #include <cstdint>
 
+#include "core/contact_plan.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "safety/command_guard.hpp"
@@ -13,7 +14,8 @@ namespace cerebellum {
 struct CycleRecord {
   std::uint64_t tick = 0;
   RobotState state;
-  JointCommand command;  // as written to the robot, after the guard
+  JointCommand command;      // as written to the robot, after the guard
+  ContactPlan contact_plan;  // planned by the control stage, for the estimator at the next tick
   SafetyReport safety;
   // the guard over the commands substep participants wrote during this tick's period (flags OR-ed;
   // zero when none did). Filled after the observers ran: they see the previous period's here

@@ -44,16 +44,20 @@ void BodyStateEstimator::reset() {
   ground_z_m_ = 0.0;
 }
 
-bool BodyStateEstimator::set_contact_schedule(const ContactSchedule& schedule) {
-  for (const LegContactPlan& plan : schedule) {
-    if (!std::isfinite(plan.probability) || !std::isfinite(plan.stance_phase)) return false;
+void BodyStateEstimator::follow_plan(const ContactPlan& plan) {
+  if (!plan) {
+    schedule_.reset();
+    return;
   }
-  schedule_ = schedule;
-  return true;
+  for (const LegContactPlan& leg : *plan) {
+    if (!std::isfinite(leg.probability) || !std::isfinite(leg.stance_phase)) return;
+  }
+  schedule_ = plan;
 }
 
-void BodyStateEstimator::update(const SensorFrame& frame, RobotState& state) {
-  kinematic_.update(frame, state);
+void BodyStateEstimator::update(const SensorFrame& frame, const ContactPlan& plan, RobotState& state) {
+  follow_plan(plan);
+  kinematic_.update(frame, plan, state);
   if (!state.valid) {
     if (filter_.initialized()) write_state(state);
     return;
@@ -63,10 +67,18 @@ void BodyStateEstimator::update(const SensorFrame& frame, RobotState& state) {
   } else {
     const double dt = std::clamp(frame.time_s - last_time_s_, 0.0, config_.max_step_s);
     update_trust(state, dt);
-    std::array<bool, kNumLegs> planted{};
-    for (std::size_t leg = 0; leg < kNumLegs; ++leg) planted[leg] = trust_[leg] >= config_.planted_trust;
-    ground_.update(filter_feet(), planted, dt);
+    // the ground plane: its slope from the planted feet as the legs measure them (trunk estimate +
+    // kinematics), its height from the filter's foot states. The filter's feet alone are pulled
+    // to the plane by its own ground-height measurement: with the deadband, that loop read a
+    // 10-degree ramp too flat for the walking controller to climb it
     LegObservations legs = observe_legs(state);
+    std::array<Eigen::Vector3d, kNumLegs> measured_feet;
+    std::array<bool, kNumLegs> planted{};
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+      measured_feet[leg] = filter_.position() + legs[leg].foot_relative_world;
+      planted[leg] = trust_[leg] >= config_.planted_trust;
+    }
+    ground_.update(measured_feet, filter_feet(), planted, dt);
     for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
       const Eigen::Vector3d foot = filter_.foot_position(leg);
       legs[leg].ground_height_m = ground_.plane().height_at(foot.x(), foot.y());
@@ -140,6 +152,7 @@ void BodyStateEstimator::write_state(RobotState& state) {
   }
   if (trust_sum >= kMinGroundTrust) ground_z_m_ = weighted_foot_z / trust_sum;
   state.height_m = state.position_world.z() - ground_z_m_;
+  state.ground = ground_.plane();
 }
 
 }  // namespace cerebellum

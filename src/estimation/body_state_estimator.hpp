@@ -3,20 +3,13 @@
 #pragma once
 
 #include <array>
-#include <optional>
 
+#include "core/contact_plan.hpp"
 #include "estimation/ground_plane.hpp"
 #include "estimation/kinematic_estimator.hpp"
 #include "estimation/linear_kalman_filter.hpp"
 
 namespace cerebellum {
-
-// one leg's place in a gait, as a gait scheduler plans it
-struct LegContactPlan {
-  double probability = 0.0;   // 0..1 that the foot is on the ground now (0 in swing)
-  double stance_phase = 0.0;  // 0..1 through the current stance; ignored in swing
-};
-using ContactSchedule = std::array<LegContactPlan, kNumLegs>;
 
 struct BodyStateEstimatorConfig {
   KinematicEstimatorConfig kinematic;
@@ -41,19 +34,16 @@ class BodyStateEstimator final : public StateEstimator {
  public:
   explicit BodyStateEstimator(const BodyStateEstimatorConfig& config = {});
   void reset() override;
-  void update(const SensorFrame& frame, RobotState& state) override;
-
-  // use the planned contacts instead of the force estimate from the next update on; a schedule
-  // with non-finite numbers is refused (returns false, the previous choice stays)
-  bool set_contact_schedule(const ContactSchedule& schedule);
-  void clear_contact_schedule() { schedule_.reset(); }
+  // with a plan, its contacts are trusted instead of the force estimate; a plan with non-finite
+  // numbers is refused (the previous choice stays)
+  void update(const SensorFrame& frame, const ContactPlan& plan, RobotState& state) override;
 
   const LinearKalmanFilter& filter() const { return filter_; }
-  const GroundPlane& ground_plane() const { return ground_.plane(); }
   // per leg 0..1, as handed to the filter on the last update
   const LinearKalmanFilter::Trust& contact_trust() const { return trust_; }
 
  private:
+  void follow_plan(const ContactPlan& plan);
   void update_trust(const RobotState& state, double dt_s);
   void start_filter(const RobotState& state);
   LegObservations observe_legs(const RobotState& state) const;
@@ -64,7 +54,7 @@ class BodyStateEstimator final : public StateEstimator {
   KinematicEstimator kinematic_;
   LinearKalmanFilter filter_;
   GroundPlaneTracker ground_;
-  std::optional<ContactSchedule> schedule_;
+  ContactPlan schedule_;  // the plan in use
   LinearKalmanFilter::Trust trust_{};
   std::array<double, kNumLegs> time_in_contact_s_{};
   double last_time_s_ = 0.0;

@@ -29,7 +29,7 @@ bool fit_ground_plane(const std::array<Eigen::Vector3d, kNumLegs>& points, Groun
 }
 
 void GroundPlaneTracker::reset(const std::array<Eigen::Vector3d, kNumLegs>& feet_world) {
-  planted_ = feet_world;
+  planted_slope_ = planted_height_ = feet_world;
   raw_gradient_.setZero();
   Eigen::Vector3d mean = Eigen::Vector3d::Zero();
   for (const auto& p : feet_world) mean += p;
@@ -37,17 +37,25 @@ void GroundPlaneTracker::reset(const std::array<Eigen::Vector3d, kNumLegs>& feet
   plane_ = GroundPlane{mean.head<2>(), mean.z(), Eigen::Vector2d::Zero()};
 }
 
-void GroundPlaneTracker::update(const std::array<Eigen::Vector3d, kNumLegs>& feet_world,
+void GroundPlaneTracker::update(const std::array<Eigen::Vector3d, kNumLegs>& slope_points,
+                                const std::array<Eigen::Vector3d, kNumLegs>& height_points,
                                 const std::array<bool, kNumLegs>& planted, double dt_s) {
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    if (planted[leg] && feet_world[leg].allFinite()) planted_[leg] = feet_world[leg];
+    if (planted[leg] && slope_points[leg].allFinite() && height_points[leg].allFinite()) {
+      planted_slope_[leg] = slope_points[leg];
+      planted_height_[leg] = height_points[leg];
+    }
   }
   GroundPlane fit;
-  if (fit_ground_plane(planted_, fit)) {
+  if (fit_ground_plane(planted_slope_, fit)) {
     const double alpha = std::clamp(dt_s / std::max(config_.gradient_time_constant_s, 1e-6), 0.0, 1.0);
     raw_gradient_ += alpha * (fit.gradient - raw_gradient_);
-    plane_.centre_xy = fit.centre_xy;
-    plane_.centre_z = fit.centre_z;
+    // through the centroid of the height points
+    Eigen::Vector3d mean = Eigen::Vector3d::Zero();
+    for (const auto& p : planted_height_) mean += p;
+    mean /= static_cast<double>(kNumLegs);
+    plane_.centre_xy = mean.head<2>();
+    plane_.centre_z = mean.z();
   }
   // deadband then clamp on the slope's tangent
   const double flat = std::tan(config_.flat_slope_rad);
@@ -55,14 +63,6 @@ void GroundPlaneTracker::update(const std::array<Eigen::Vector3d, kNumLegs>& fee
   const double slope = raw_gradient_.norm();
   const double kept = std::clamp(slope - flat, 0.0, steepest);
   plane_.gradient = slope > 0.0 ? Eigen::Vector2d(raw_gradient_ * (kept / slope)) : Eigen::Vector2d::Zero();
-}
-
-double GroundPlaneTracker::pitch_along(double yaw) const {
-  return -std::atan(plane_.gradient.dot(Eigen::Vector2d(std::cos(yaw), std::sin(yaw))));
-}
-
-double GroundPlaneTracker::roll_along(double yaw) const {
-  return std::atan(plane_.gradient.dot(Eigen::Vector2d(-std::sin(yaw), std::cos(yaw))));
 }
 
 }  // namespace cerebellum

@@ -1,24 +1,15 @@
-// The ground under the robot as a plane z = z_c + g . ((x, y) - c), fitted to the points where
-// the feet were last planted. Robust for control: only feet planted for a while count, the
-// gradient is low-passed, small slopes read as flat and steep ones are clamped.
+// Fits and tracks the ground plane (core/ground_plane.hpp) through the points where the feet
+// were last planted. Robust for control: only feet planted for a while count, the gradient is
+// low-passed, small slopes read as flat and steep ones are clamped.
 #pragma once
 
 #include <Eigen/Core>
 #include <array>
 
+#include "core/ground_plane.hpp"
 #include "core/joint_layout.hpp"
 
 namespace cerebellum {
-
-struct GroundPlane {
-  Eigen::Vector2d centre_xy = Eigen::Vector2d::Zero();  // world x, y the plane passes through
-  double centre_z = 0.0;                                // its height there (m)
-  Eigen::Vector2d gradient = Eigen::Vector2d::Zero();   // dz/dx, dz/dy
-
-  double height_at(double x, double y) const {
-    return centre_z + gradient.dot(Eigen::Vector2d(x, y) - centre_xy);
-  }
-};
 
 // least-squares plane through the points (vertical residuals); false (plane unchanged) when
 // their x, y are (nearly) collinear
@@ -39,15 +30,20 @@ class GroundPlaneTracker {
   // feet_world: foot contact points (world); planted: legs in stance for a while, whose points
   // replace the stored ones
   void update(const std::array<Eigen::Vector3d, kNumLegs>& feet_world, const std::array<bool, kNumLegs>& planted,
+              double dt_s) {
+    update(feet_world, feet_world, planted, dt_s);
+  }
+  // the same with two estimates of the contact points: the slope from one (their differences),
+  // the height the plane passes through from the other
+  void update(const std::array<Eigen::Vector3d, kNumLegs>& slope_points,
+              const std::array<Eigen::Vector3d, kNumLegs>& height_points, const std::array<bool, kNumLegs>& planted,
               double dt_s);
   const GroundPlane& plane() const { return plane_; }
-  // ground pitch and roll seen along a heading (rad): nose-up on an uphill is negative pitch
-  double pitch_along(double yaw) const;
-  double roll_along(double yaw) const;
 
  private:
   GroundPlaneTrackerConfig config_;
-  std::array<Eigen::Vector3d, kNumLegs> planted_{};
+  std::array<Eigen::Vector3d, kNumLegs> planted_slope_{};
+  std::array<Eigen::Vector3d, kNumLegs> planted_height_{};
   Eigen::Vector2d raw_gradient_ = Eigen::Vector2d::Zero();  // low-passed fit, before deadband
   GroundPlane plane_;
 };

@@ -28,7 +28,7 @@ KinematicEstimator::KinematicEstimator(const KinematicEstimatorConfig& config) :
 
 void KinematicEstimator::reset() {}
 
-void KinematicEstimator::update(const SensorFrame& frame, RobotState& state) {
+void KinematicEstimator::update(const SensorFrame& frame, const ContactPlan& /*plan*/, RobotState& state) {
   state.time_s = frame.time_s;
   if (!sensor_frame_is_finite(frame)) {
     state.valid = false;

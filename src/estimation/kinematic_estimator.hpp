@@ -14,7 +14,8 @@ class KinematicEstimator : public StateEstimator {
  public:
   explicit KinematicEstimator(const KinematicEstimatorConfig& config = {});
   void reset() override;
-  void update(const SensorFrame& frame, RobotState& state) override;
+  // contacts come from the foot forces alone: the plan is not used
+  void update(const SensorFrame& frame, const ContactPlan& plan, RobotState& state) override;
 
  private:
   KinematicEstimatorConfig config_;

@@ -174,6 +174,10 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
   update_status(state);
 }
 
+ContactPlan HighLevelMachine::contact_plan() const {
+  return current_ != nullptr ? current_->contact_plan() : std::nullopt;
+}
+
 void HighLevelMachine::update_status(const RobotState& state) {
   status_.mode = handed_over_ ? static_cast<int>(ModeId::LowLevelMotor) : static_cast<int>(current_->id());
   status_.gait_id = current_->gait_id();

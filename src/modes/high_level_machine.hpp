@@ -48,6 +48,8 @@ class HighLevelMachine final : public OwnBehaviour {
 
   // loop thread
   void compute(const RobotState& state, JointCommand& command) override;
+  // the running mode's plan
+  ContactPlan contact_plan() const override;
   bool allows_low_level_latch() const override;
   void on_handover() override;
 

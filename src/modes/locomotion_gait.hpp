@@ -7,6 +7,7 @@
 
 #include <Eigen/Core>
 
+#include "core/contact_plan.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "modes/command_ranges.hpp"
@@ -36,6 +37,8 @@ class LocomotionGait {
   // a new command for the running gait: velocity, height, pitch change without restarting
   virtual void update(const LocomotionCommand& command) = 0;
   virtual void run(const RobotState& state, JointCommand& command) = 0;
+  // the contacts the last run() planned for the next tick (for the estimator); none unless it steps
+  virtual ContactPlan contact_plan() const { return std::nullopt; }
   // another gait or mode takes over the robot
   virtual void stop() {}
   // order_process_bar while this gait runs

@@ -79,6 +79,10 @@ void LocomotionMode::exit() {
 
 void LocomotionMode::run(const RobotState& state, JointCommand& command) { running_->run(state, command); }
 
+ContactPlan LocomotionMode::contact_plan() const {
+  return running_ != nullptr ? running_->contact_plan() : std::nullopt;
+}
+
 int LocomotionMode::progress_percent() const { return running_->progress_percent(); }
 
 }  // namespace cerebellum

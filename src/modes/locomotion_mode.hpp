@@ -19,6 +19,7 @@ class LocomotionMode final : public Mode {
   void update(const RobotState& state, const HighLevelCommand& command) override;
   void exit() override;
   void run(const RobotState& state, JointCommand& command) override;
+  ContactPlan contact_plan() const override;
   int gait_id() const override { return gait_id_; }
   int progress_percent() const override;
 

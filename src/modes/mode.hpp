@@ -1,6 +1,7 @@
 // One behaviour of the high-level state machine (a row of the mode table).
 #pragma once
 
+#include "core/contact_plan.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "modes/high_level_command.hpp"
@@ -21,6 +22,8 @@ class Mode {
   virtual void update(const RobotState& state, const HighLevelCommand& command) = 0;
   // one control tick; must not block, allocate or print
   virtual void run(const RobotState& state, JointCommand& command) = 0;
+  // the contacts the last run() planned for the next tick (for the estimator); none unless it steps
+  virtual ContactPlan contact_plan() const { return std::nullopt; }
   virtual int gait_id() const = 0;
   // order_process_bar: percent of the mode's transition done; 100 once it holds its target
   virtual int progress_percent() const = 0;

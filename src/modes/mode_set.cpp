@@ -25,11 +25,11 @@ WalkingGaitsConfig walking_config(const ModeSetConfig& config) {
 
 }  // namespace
 
-ModeSet::ModeSet(const ModeSetConfig& config, BodyStateEstimator* estimator)
+ModeSet::ModeSet(const ModeSetConfig& config)
     : pure_damper_(pure_damper_config(config)),
       recovery_stand_(config.stand_up),
       lifted_(default_lifted_config()),
-      walking_(walking_config(config), std::make_unique<qp::GoldfarbIdnaniSolver>(), estimator),
+      walking_(walking_config(config), std::make_unique<qp::GoldfarbIdnaniSolver>()),
       locomotion_(gaits_) {
   // the stepping gaits of the table run on the MPC locomotion controller; the stands on the
   // configured one

@@ -3,7 +3,6 @@
 #pragma once
 
 #include "control/stand_up_controller.hpp"
-#include "estimation/body_state_estimator.hpp"
 #include "modes/high_level_machine.hpp"
 #include "modes/lifted_mode.hpp"
 #include "modes/locomotion_stand.hpp"
@@ -26,8 +25,7 @@ struct ModeSetConfig {
 
 class ModeSet {
  public:
-  // estimator (may be null): gets the walking gaits' planned contacts
-  ModeSet(const ModeSetConfig& config, BodyStateEstimator* estimator);
+  explicit ModeSet(const ModeSetConfig& config);
   ModeSet(const ModeSet&) = delete;
   ModeSet& operator=(const ModeSet&) = delete;
 

@@ -25,4 +25,8 @@ void SourceArbiter::compute(const RobotState& state, JointCommand& command) {
   }
 }
 
+ContactPlan SourceArbiter::contact_plan() const {
+  return latched_ != nullptr ? latched_->contact_plan() : own_.contact_plan();
+}
+
 }  // namespace cerebellum

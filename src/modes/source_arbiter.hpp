@@ -38,6 +38,8 @@ class SourceArbiter final : public MotionController {
   explicit SourceArbiter(OwnBehaviour& own);
   void add_low_level_source(LowLevelSource& source);
   void compute(const RobotState& state, JointCommand& command) override;
+  // the plan of whoever computed the command: the latched source or the MC's own behaviour
+  ContactPlan contact_plan() const override;
 
   // the latched source, or nullptr while the MC's own behaviour runs
   const LowLevelSource* latched() const { return latched_; }

@@ -18,24 +18,24 @@ constexpr std::size_t mode_index(ModeId mode) {
 }
 
 // a set of modes as bits at their positions in kAllModes
-using ModeSet = std::uint32_t;
-static_assert(kAllModes.size() <= 32, "a ModeSet holds one bit per mode");
+using ModeBits = std::uint32_t;
+static_assert(kAllModes.size() <= 32, "a ModeBits holds one bit per mode");
 
-constexpr ModeSet modes(std::initializer_list<ModeId> list) {
-  ModeSet set = 0;
-  for (ModeId mode : list) set |= ModeSet{1} << mode_index(mode);
+constexpr ModeBits modes(std::initializer_list<ModeId> list) {
+  ModeBits set = 0;
+  for (ModeId mode : list) set |= ModeBits{1} << mode_index(mode);
   return set;
 }
 
-constexpr ModeSet every_mode() {
-  ModeSet set = 0;
+constexpr ModeBits every_mode() {
+  ModeBits set = 0;
   for (const ModeInfo& info : kAllModes) set |= modes({info.id});
   return set;
 }
 
 struct Row {
   ModeId from;
-  ModeSet to;
+  ModeBits to;
 };
 
 // one row per mode, in the order of kAllModes
@@ -74,7 +74,7 @@ bool transition_allowed(ModeId from, ModeId to) {
   const std::size_t row = mode_index(from);
   const std::size_t column = mode_index(to);
   if (row == kAllModes.size() || column == kAllModes.size()) return false;
-  return (kTable[row].to & (ModeSet{1} << column)) != 0;
+  return (kTable[row].to & (ModeBits{1} << column)) != 0;
 }
 
 }  // namespace cerebellum

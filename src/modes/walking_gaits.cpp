@@ -21,9 +21,8 @@ LocomotionTarget locomotion_target_from(const LocomotionCommand& command) {
   return target;
 }
 
-WalkingGaits::WalkingGaits(const WalkingGaitsConfig& config, std::unique_ptr<qp::QpSolver> solver,
-                           BodyStateEstimator* estimator)
-    : config_(config), controller_(config.locomotion, std::move(solver)), estimator_(estimator) {}
+WalkingGaits::WalkingGaits(const WalkingGaitsConfig& config, std::unique_ptr<qp::QpSolver> solver)
+    : config_(config), controller_(config.locomotion, std::move(solver)) {}
 
 const char* WalkingGaits::check(const HighLevelCommand& command) const {
   if (!gait_pattern(command.gait_id)) return "gait not available in mode 11";
@@ -42,9 +41,7 @@ void WalkingGaits::update(const LocomotionCommand& command) {
   controller_.set_command(locomotion_target_from(command));
 }
 
-void WalkingGaits::stop() {
-  if (estimator_ != nullptr) estimator_->clear_contact_schedule();
-}
+void WalkingGaits::stop() { plan_.reset(); }
 
 void WalkingGaits::run(const RobotState& state, JointCommand& command) {
   if (failed()) {
@@ -53,13 +50,7 @@ void WalkingGaits::run(const RobotState& state, JointCommand& command) {
     return;
   }
   controller_.compute(state, command);
-  if (estimator_ == nullptr) return;
-  ContactSchedule schedule{};
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    const LegPhase phase = controller_.scheduler().leg_phase(leg);
-    schedule[leg] = {phase.stance ? 1.0 : 0.0, phase.stance_phase};
-  }
-  estimator_->set_contact_schedule(schedule);
+  plan_ = controller_.contact_schedule();
 }
 
 }  // namespace cerebellum

@@ -1,13 +1,12 @@
 // The MPC gaits of mode 11 (the stepping gaits of the gait table, and its stands when served by
 // the MPC): one LocomotionGait registered under every such gait id, so a gait or velocity change
-// while walking updates the running controller. It feeds the gait's contact schedule to the
-// estimator and falls back to joint damping when the MPC keeps failing.
+// while walking updates the running controller. It plans the contacts (the gait's schedule) for
+// the estimator and falls back to joint damping when the MPC keeps failing.
 #pragma once
 
 #include <memory>
 
 #include "control/locomotion/locomotion_controller.hpp"
-#include "estimation/body_state_estimator.hpp"
 #include "modes/locomotion_gait.hpp"
 
 namespace cerebellum {
@@ -23,14 +22,14 @@ LocomotionTarget locomotion_target_from(const LocomotionCommand& command);
 
 class WalkingGaits final : public LocomotionGait {
  public:
-  // estimator (may be null): gets the planned contacts every tick while walking
-  WalkingGaits(const WalkingGaitsConfig& config, std::unique_ptr<qp::QpSolver> solver, BodyStateEstimator* estimator);
+  WalkingGaits(const WalkingGaitsConfig& config, std::unique_ptr<qp::QpSolver> solver);
 
   const char* check(const HighLevelCommand& command) const override;
   void start(const RobotState& state, const LocomotionCommand& command) override;
   void update(const LocomotionCommand& command) override;
   void run(const RobotState& state, JointCommand& command) override;
   void stop() override;
+  ContactPlan contact_plan() const override { return plan_; }
   int progress_percent() const override { return 100; }
 
   // the MPC failed several times in a row: the robot is being damped down
@@ -40,7 +39,8 @@ class WalkingGaits final : public LocomotionGait {
  private:
   WalkingGaitsConfig config_;
   LocomotionController controller_;
-  BodyStateEstimator* estimator_;
+  // the schedule of the last healthy run; kept while the MPC has failed, none once stopped
+  ContactPlan plan_;
 };
 
 }  // namespace cerebellum

@@ -1,4 +1,5 @@
-// The control loop's cycle with a fake robot: stage order, guard, substeps, durations.
+// The control loop's cycle with a fake robot: stage order, guard, substeps, durations, and the
+// contact plan carried from the control stage to the estimator.
 #include "app/control_loop.hpp"
 
 #include <gtest/gtest.h>
@@ -139,6 +140,46 @@ TEST(ControlLoop, RunReturnsAtOnceWhenStopIsSet) {
   Loop l(controller);
   const std::atomic<bool> stop{true};
   EXPECT_EQ(l.loop.run({-1.0, 0.0}, stop).ticks, 0u);
+}
+
+// plans every leg in stance with the tick count as its stance phase (none on the first tick)
+class PlanningController final : public MotionController {
+ public:
+  void compute(const RobotState&, JointCommand& command) override {
+    command = JointCommand{};
+    ++computed;
+  }
+  ContactPlan contact_plan() const override {
+    if (computed < 2) return std::nullopt;
+    ContactSchedule schedule{};
+    for (LegContactPlan& leg : schedule) leg = {1.0, static_cast<double>(computed)};
+    return schedule;
+  }
+  int computed = 0;
+};
+
+// the kinematic estimate, remembering the plans it was handed
+class PlanRecordingEstimator final : public StateEstimator {
+ public:
+  void reset() override { inner.reset(); }
+  void update(const SensorFrame& frame, const ContactPlan& plan, RobotState& state) override {
+    plans.push_back(plan ? (*plan)[0].stance_phase : -1.0);
+    inner.update(frame, plan, state);
+  }
+  KinematicEstimator inner;
+  std::vector<double> plans;  // stance phase of leg 0, -1 for no plan
+};
+
+TEST(ControlLoop, TheControllersContactPlanReachesTheEstimatorAtTheNextTick) {
+  PlanningController controller;
+  FakeBackend backend;
+  PlanRecordingEstimator estimator;
+  ControlLoop loop(backend, estimator, controller, GuardLimits{}, 0.002);
+  for (int i = 0; i < 4; ++i) loop.tick();
+  // tick 0 has no plan yet; the first compute plans none; then each tick sees the plan of the one before
+  EXPECT_EQ(estimator.plans, (std::vector<double>{-1.0, -1.0, 2.0, 3.0}));
+  ASSERT_TRUE(loop.last_cycle().contact_plan.has_value());
+  EXPECT_EQ((*loop.last_cycle().contact_plan)[3].stance_phase, 4.0);
 }
 
 TEST(ControlLoop, RejectsAPeriodTheSubstepDoesNotDivide) {

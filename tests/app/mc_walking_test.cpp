@@ -34,6 +34,8 @@ TEST(McWalking, StandsThenTrotsForwardOnCommand) {
   EXPECT_EQ(mc.machine().status().switch_status, SwitchStatus::Done);
   EXPECT_NEAR(mc.simulation().ground_truth().position[0] - x0, 2.5, 0.15 * 2.5);
   EXPECT_GT(mc.simulation().ground_truth().position[2], 0.22);
+  // the trot's contact plan travels in the cycle record to the estimator
+  EXPECT_TRUE(mc.loop().last_cycle().contact_plan.has_value());
 }
 
 TEST(McWalking, WalkingFromLyingIsBannedAndTheRobotStaysDown) {
@@ -87,6 +89,7 @@ TEST(McWalking, QpStandServesTheStandGaitsWhenConfigured) {
   EXPECT_EQ(mc.machine().status().gait_id, 31);
   // the QP stand plans no steps: the walking controller has not run a single MPC solve
   EXPECT_EQ(mc.walking().controller().telemetry().mpc_solves, 0u);
+  EXPECT_FALSE(mc.loop().last_cycle().contact_plan.has_value());
   EXPECT_GT(mc.simulation().ground_truth().position[2], 0.2);
 }
 

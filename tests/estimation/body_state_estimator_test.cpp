@@ -56,7 +56,7 @@ TEST(BodyStateEstimator, StandingStillStaysPutAtTheKinematicHeight) {
   BodyStateEstimator estimator;
   RobotState state;
   for (int k = 0; k <= 1000; ++k) {
-    estimator.update(standing_frame(k * kDt, 20.0), state);
+    estimator.update(standing_frame(k * kDt, 20.0), std::nullopt, state);
     ASSERT_TRUE(state.valid);
   }
   EXPECT_NEAR(state.position_world.x(), 0.0, 1e-9);
@@ -67,30 +67,34 @@ TEST(BodyStateEstimator, StandingStillStaysPutAtTheKinematicHeight) {
   for (double trust : estimator.contact_trust()) EXPECT_EQ(trust, 1.0);
 }
 
-TEST(BodyStateEstimator, TrustFollowsForceContactsUnlessAScheduleIsGiven) {
+TEST(BodyStateEstimator, TrustFollowsForceContactsUnlessAPlanIsGiven) {
   BodyStateEstimatorConfig config;
   config.force_contact_ramp_s = 0.01;
   BodyStateEstimator estimator(config);
   RobotState state;
   double t = 0.0;
-  for (int k = 0; k < 3; ++k, t += kDt) estimator.update(standing_frame(t, 20.0), state);
+  for (int k = 0; k < 3; ++k, t += kDt) estimator.update(standing_frame(t, 20.0), std::nullopt, state);
   // two updates after the first (which only starts the filter): 4 ms into a 10 ms ramp
   EXPECT_NEAR(estimator.contact_trust()[0], 0.4, 1e-9);
-  for (int k = 0; k < 10; ++k, t += kDt) estimator.update(standing_frame(t, 20.0), state);
+  for (int k = 0; k < 10; ++k, t += kDt) estimator.update(standing_frame(t, 20.0), std::nullopt, state);
   EXPECT_EQ(estimator.contact_trust()[0], 1.0);
 
   // the plan: FR in swing, FL late in its stance, the rear feet mid-stance
-  EXPECT_TRUE(estimator.set_contact_schedule({{{0.0, 0.0}, {1.0, 0.95}, {1.0, 0.5}, {1.0, 0.5}}}));
-  estimator.update(standing_frame(t, 20.0), state);
+  const ContactPlan plan = ContactSchedule{{{0.0, 0.0}, {1.0, 0.95}, {1.0, 0.5}, {1.0, 0.5}}};
+  estimator.update(standing_frame(t, 20.0), plan, state);
   t += kDt;
   EXPECT_EQ(estimator.contact_trust()[0], 0.0);
   EXPECT_NEAR(estimator.contact_trust()[1], 0.5, 1e-9);
   EXPECT_EQ(estimator.contact_trust()[2], 1.0);
-  EXPECT_FALSE(estimator.set_contact_schedule({{{std::nan(""), 0.5}, {1.0, 0.5}, {1.0, 0.5}, {1.0, 0.5}}}));
+  // a plan with a NaN is refused: the previous plan stays in use
+  const ContactPlan broken = ContactSchedule{{{std::nan(""), 0.5}, {1.0, 0.5}, {1.0, 0.5}, {1.0, 0.5}}};
+  estimator.update(standing_frame(t, 20.0), broken, state);
+  t += kDt;
+  EXPECT_EQ(estimator.contact_trust()[0], 0.0);
+  EXPECT_NEAR(estimator.contact_trust()[1], 0.5, 1e-9);
 
   // back to forces: no foot pushes, no trust
-  estimator.clear_contact_schedule();
-  estimator.update(standing_frame(t, -20.0), state);
+  estimator.update(standing_frame(t, -20.0), std::nullopt, state);
   for (double trust : estimator.contact_trust()) EXPECT_EQ(trust, 0.0);
 }
 
@@ -98,16 +102,16 @@ TEST(BodyStateEstimator, NonFiniteFrameIsInvalidAndLeavesTheEstimateFinite) {
   BodyStateEstimator estimator;
   RobotState state;
   double t = 0.0;
-  for (int k = 0; k < 100; ++k, t += kDt) estimator.update(standing_frame(t, 20.0), state);
+  for (int k = 0; k < 100; ++k, t += kDt) estimator.update(standing_frame(t, 20.0), std::nullopt, state);
   const Eigen::Vector3d position = state.position_world;
   SensorFrame bad = standing_frame(t, 20.0);
   bad.imu_accel[2] = std::nan("");
-  estimator.update(bad, state);
+  estimator.update(bad, std::nullopt, state);
   EXPECT_FALSE(state.valid);
   EXPECT_TRUE(state.position_world.allFinite());
   EXPECT_TRUE(state.velocity_world.allFinite());
   EXPECT_EQ(state.position_world, position);
-  estimator.update(standing_frame(t + kDt, 20.0), state);
+  estimator.update(standing_frame(t + kDt, 20.0), std::nullopt, state);
   EXPECT_TRUE(state.valid);
   EXPECT_TRUE(estimator.filter().state().allFinite());
 

@@ -1,5 +1,5 @@
 // The ground plane fit against a full least-squares solve of z = a + b x + c y, and the
-// tracker's planted-feet rule, low-pass, deadband and clamp.
+// tracker's planted-feet rule, low-pass, deadband and clamp, slope and height from two point sets.
 #include "estimation/ground_plane.hpp"
 
 #include <gtest/gtest.h>
@@ -69,10 +69,10 @@ TEST(GroundPlaneTracker, ConvergesToA10DegreeRampAndGivesItsPitch) {
   EXPECT_NEAR(plane.gradient.y(), 0.0, 1e-9);
   EXPECT_NEAR(plane.height_at(1.5, 0.0), -0.1 + slope * 1.5, 1e-9);  // through the feet's centroid
   const double angle = std::atan(plane.gradient.x());
-  EXPECT_NEAR(tracker.pitch_along(0.0), -angle, 1e-12);  // uphill ahead: nose up
-  EXPECT_NEAR(tracker.pitch_along(M_PI), angle, 1e-12);
-  EXPECT_NEAR(tracker.roll_along(M_PI / 2), -angle, 1e-12);  // ground rises to the right
-  EXPECT_NEAR(tracker.roll_along(0.0), 0.0, 1e-12);
+  EXPECT_NEAR(tracker.plane().pitch_along(0.0), -angle, 1e-12);  // uphill ahead: nose up
+  EXPECT_NEAR(tracker.plane().pitch_along(M_PI), angle, 1e-12);
+  EXPECT_NEAR(tracker.plane().roll_along(M_PI / 2), -angle, 1e-12);  // ground rises to the right
+  EXPECT_NEAR(tracker.plane().roll_along(0.0), 0.0, 1e-12);
 }
 
 TEST(GroundPlaneTracker, SmallSlopesReadFlatAndSteepOnesAreClamped) {
@@ -98,6 +98,21 @@ TEST(GroundPlaneTracker, OnlyPlantedFeetMoveThePlaneAndTheGradientIsLowPassed) {
   tracker.update(feet_on(0.0, slope, 0.0, 0.0, 0.0), {true, true, true, true}, 0.03);
   const double raw = slope * 0.03 / GroundPlaneTrackerConfig{}.gradient_time_constant_s;
   EXPECT_NEAR(tracker.plane().gradient.x(), raw - std::tan(GroundPlaneTrackerConfig{}.flat_slope_rad), 1e-9);
+}
+
+TEST(GroundPlaneTracker, SlopeComesFromOnePointSetAndHeightFromTheOther) {
+  const double slope = std::tan(10.0 * M_PI / 180.0);
+  GroundPlaneTracker tracker;
+  tracker.reset(feet_on(0.0, 0.0, 0.0, 0.0, 0.0));
+  // measured feet on a ramp through z = 0.2 at their centroid; the height estimate flat at 0.05
+  const Feet on_ramp = feet_on(0.2 - slope * 1.0, slope, 0.0, 1.0, 0.0);
+  const Feet level = feet_on(0.05, 0.0, 0.0, 1.0, 0.0);
+  const std::array<bool, kNumLegs> all{true, true, true, true};
+  for (int i = 0; i < 2000; ++i) tracker.update(on_ramp, level, all, 0.002);
+  const double expected = slope - std::tan(GroundPlaneTrackerConfig{}.flat_slope_rad);
+  EXPECT_NEAR(tracker.plane().gradient.x(), expected, 1e-6);
+  EXPECT_NEAR(tracker.plane().height_at(1.0, 0.0), 0.05, 1e-12);
+  EXPECT_NEAR(tracker.plane().height_at(2.0, 0.0), 0.05 + expected, 1e-6);
 }
 
 }  // namespace

@@ -36,7 +36,7 @@ TEST(KinematicEstimator, RollPitchYawFromTheImuQuaternion) {
   frame.imu_quat = {q.w(), q.x(), q.y(), q.z()};
   KinematicEstimator estimator;
   RobotState state;
-  estimator.update(frame, state);
+  estimator.update(frame, std::nullopt, state);
   ASSERT_TRUE(state.valid);
   EXPECT_NEAR(state.rpy.x(), 0.1, 1e-12);
   EXPECT_NEAR(state.rpy.y(), -0.2, 1e-12);
@@ -48,7 +48,7 @@ TEST(KinematicEstimator, GravityIsRemovedFromTheAccelerometer) {
   frame.imu_accel = {1.0, 0.0, 9.81};
   KinematicEstimator estimator;
   RobotState state;
-  estimator.update(frame, state);
+  estimator.update(frame, std::nullopt, state);
   EXPECT_NEAR(state.accel_world.x(), 1.0, 1e-12);
   EXPECT_NEAR(state.accel_world.z(), 0.0, 1e-12);
 }
@@ -59,7 +59,7 @@ TEST(KinematicEstimator, ContactsFromFootForceAndHeightFromStanceFeet) {
   frame.tau[3] = frame.tau[4] = frame.tau[5] = 0.0;  // FL carries nothing
   KinematicEstimator estimator;
   RobotState state;
-  estimator.update(frame, state);
+  estimator.update(frame, std::nullopt, state);
   EXPECT_EQ(state.contact[0], 1.0);
   EXPECT_EQ(state.contact[1], 0.0);
   EXPECT_EQ(state.contact[2], 1.0);
@@ -73,7 +73,7 @@ TEST(KinematicEstimator, PullingUpIsNotContact) {
   push_down(frame, -20.0);
   KinematicEstimator estimator;
   RobotState state;
-  estimator.update(frame, state);
+  estimator.update(frame, std::nullopt, state);
   for (double c : state.contact) EXPECT_EQ(c, 0.0);
 }
 
@@ -82,11 +82,11 @@ TEST(KinematicEstimator, NonFiniteFrameIsInvalid) {
   frame.q[7] = std::nan("");
   KinematicEstimator estimator;
   RobotState state;
-  estimator.update(frame, state);
+  estimator.update(frame, std::nullopt, state);
   EXPECT_FALSE(state.valid);
   frame = standing_frame();
   frame.imu_quat = {0.0, 0.0, 0.0, 0.0};
-  estimator.update(frame, state);
+  estimator.update(frame, std::nullopt, state);
   EXPECT_FALSE(state.valid);
 }
 

@@ -1,5 +1,5 @@
 // A simulated robot that stands up, then walks with the locomotion controller on its own
-// estimate (BodyStateEstimator fed with the gait's contact schedule), in lockstep time.
+// estimate (BodyStateEstimator fed by the loop with the gait's contact plan), in lockstep time.
 #pragma once
 
 #include <memory>
@@ -16,8 +16,8 @@ namespace cerebellum::testing {
 
 class StandThenWalk final : public MotionController {
  public:
-  StandThenWalk(BodyStateEstimator& estimator, std::unique_ptr<qp::QpSolver> solver)
-      : stand_(default_stand_up_config()), walk_(LocomotionConfig{}, std::move(solver)), estimator_(estimator) {}
+  explicit StandThenWalk(std::unique_ptr<qp::QpSolver> solver)
+      : stand_(default_stand_up_config()), walk_(LocomotionConfig{}, std::move(solver)) {}
 
   void compute(const RobotState& state, JointCommand& command) override {
     if (state.time_s < kStandSeconds) {
@@ -30,12 +30,10 @@ class StandThenWalk final : public MotionController {
       walk_.reset(state);
     }
     walk_.compute(state, command);
-    ContactSchedule schedule{};
-    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-      const LegPhase phase = walk_.scheduler().leg_phase(leg);
-      schedule[leg] = {phase.stance ? 1.0 : 0.0, phase.stance_phase};
-    }
-    estimator_.set_contact_schedule(schedule);
+  }
+  ContactPlan contact_plan() const override {
+    if (!walking_) return std::nullopt;
+    return walk_.contact_schedule();
   }
 
   bool set(const LocomotionTarget& command) {
@@ -49,7 +47,6 @@ class StandThenWalk final : public MotionController {
  private:
   StandUpController stand_;
   LocomotionController walk_;
-  BodyStateEstimator& estimator_;
   LocomotionTarget command_;
   bool walking_ = false;
 };
@@ -63,7 +60,7 @@ inline LocomotionTarget walk_command(int gait, double vx, double vy = 0.0, doubl
 
 struct WalkingSim {
   explicit WalkingSim(std::unique_ptr<qp::QpSolver> solver = std::make_unique<qp::GoldfarbIdnaniSolver>())
-      : backend(config()), controller(estimator, std::move(solver)),
+      : backend(config()), controller(std::move(solver)),
         loop(backend, estimator, controller, GuardLimits{}, 0.002) {}
 
   static MujocoBackendConfig config() {

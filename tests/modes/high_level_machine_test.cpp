@@ -21,9 +21,11 @@ class ScriptedMode final : public Mode {
     command = JointCommand{};
     command.kp.fill(static_cast<double>(id_));
   }
+  ContactPlan contact_plan() const override { return plan; }
   int gait_id() const override { return gait_; }
   int progress_percent() const override { return progress; }
 
+  ContactPlan plan;
   int progress = 100;
   int entered = 0;
   int updated = 0;
@@ -71,6 +73,18 @@ TEST(HighLevelMachine, StartsInTheStartupModeAndRunsIt) {
   EXPECT_EQ(command.kp[0], 12.0);
   EXPECT_EQ(m.machine.status().mode, 12);
   EXPECT_EQ(m.recovery.entered, 1);
+}
+
+TEST(HighLevelMachine, ContactPlanIsTheRunningModes) {
+  Machine m(ModeId::Locomotion);
+  m.loco.plan = ContactSchedule{{{1.0, 0.25}, {0.0, 0.0}, {0.0, 0.0}, {1.0, 0.25}}};
+  m.tick();
+  ASSERT_TRUE(m.machine.contact_plan().has_value());
+  EXPECT_EQ((*m.machine.contact_plan())[0].stance_phase, 0.25);
+  m.machine.submit(cmd(ModeId::PureDamper, 0, 1), m.state.time_s);
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, static_cast<int>(ModeId::PureDamper));
+  EXPECT_FALSE(m.machine.contact_plan().has_value());
 }
 
 TEST(HighLevelMachine, LegalSwitchRunsTheNewModeAndReportsIt) {

@@ -18,7 +18,7 @@ ModeSetConfig config_with(LocomotionStand stand) {
 
 TEST(ModeSet, WalkingGaitsRunOnTheMpcAndTheStandsOnTheConfiguredController) {
   for (LocomotionStand stand : {LocomotionStand::Mpc, LocomotionStand::Qp}) {
-    const ModeSet modes(config_with(stand), nullptr);
+    const ModeSet modes(config_with(stand));
     for (int id : kWalkingGaitIds) EXPECT_EQ(modes.gaits().find(id), &modes.walking()) << id;
     const LocomotionGait* expected_stand = stand == LocomotionStand::Mpc
                                                ? static_cast<const LocomotionGait*>(&modes.walking())
@@ -28,7 +28,7 @@ TEST(ModeSet, WalkingGaitsRunOnTheMpcAndTheStandsOnTheConfiguredController) {
 }
 
 TEST(ModeSet, OtherGaitIdsHaveNoController) {
-  const ModeSet modes(ModeSetConfig{}, nullptr);
+  const ModeSet modes(ModeSetConfig{});
   for (int id = 0; id <= GaitRegistry::kMaxGaitId; ++id) {
     bool listed = false;
     for (int walking : kWalkingGaitIds) listed |= walking == id;

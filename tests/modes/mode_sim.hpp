@@ -40,7 +40,7 @@ inline ModeSetConfig mode_sim_config() {
 struct ModeSim {
   explicit ModeSim(ModeId startup = ModeId::RecoveryStand, double initial_height_m = 0.3)
       : backend(sim_config(initial_height_m)),
-        modes(mode_sim_config(), &estimator),
+        modes(mode_sim_config()),
         recovery_stand(modes.recovery_stand()),
         stand_gait(modes.qp_stand_gait()),
         machine(0.002, command(startup)),

@@ -13,7 +13,9 @@ class ConstantBehaviour final : public OwnBehaviour {
  public:
   ConstantBehaviour(double kp, bool allows_latch) : kp_(kp), allows_latch_(allows_latch) {}
   void compute(const RobotState&, JointCommand& command) override { command.kp.fill(kp_); }
+  ContactPlan contact_plan() const override { return plan; }
   bool allows_low_level_latch() const override { return allows_latch_; }
+  ContactPlan plan;
   void on_handover() override { ++handovers; }
   int handovers = 0;
 
@@ -61,6 +63,22 @@ TEST(SourceArbiter, OwnBehaviourRunsUntilASourceAsks) {
   sdk.wants = false;
   arbiter.compute(RobotState{}, command);
   EXPECT_EQ(command.kp[0], 2.0);
+}
+
+TEST(SourceArbiter, ContactPlanComesFromWhoeverCommandsTheRobot) {
+  ConstantBehaviour own(1.0, true);
+  own.plan = ContactSchedule{};
+  SourceArbiter arbiter(own);
+  ScriptedSource sdk("motor_sdk", 2.0);
+  arbiter.add_low_level_source(sdk);
+  JointCommand command;
+  arbiter.compute(RobotState{}, command);
+  EXPECT_TRUE(arbiter.contact_plan().has_value());
+  // a low-level source plans no contacts
+  sdk.wants = true;
+  arbiter.compute(RobotState{}, command);
+  EXPECT_EQ(arbiter.latched(), &sdk);
+  EXPECT_FALSE(arbiter.contact_plan().has_value());
 }
 
 TEST(SourceArbiter, SecondSourceIsRefusedWhileTheFirstHoldsTheRobot) {

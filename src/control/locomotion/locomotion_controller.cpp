@@ -26,20 +26,13 @@ Eigen::Matrix3d yaw_rotation(double yaw) {
   return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
 }
 
-// contact point under the foot sphere (world)
-Eigen::Vector3d foot_on_ground_world(const RobotState& state, std::size_t leg) {
-  return state.position_world + state.orientation * state.foot_position_body[leg] -
-         Eigen::Vector3d(0.0, 0.0, robot::kFootRadius);
-}
-
 }  // namespace
 
 LocomotionController::LocomotionController(const LocomotionConfig& config, std::unique_ptr<qp::QpSolver> solver)
     : config_(config),
       mpc_(config_.mpc, std::move(solver)),
       worker_(mpc_),
-      scheduler_(config.tick_s * config.ticks_per_segment),
-      ground_(config.ground) {
+      scheduler_(config.tick_s * config.ticks_per_segment) {
   target_.gait = *gait_pattern(kStandGaitId);
   target_.height_m = config.default_height_m;
   target_.step_height_front_m = target_.step_height_rear_m = find_gait(kStandGaitId)->default_step_height_m;
@@ -58,9 +51,6 @@ void LocomotionController::reset(const RobotState& state) {
   was_stance_.fill(true);
   swing_frame_ = state.orientation.toRotationMatrix();
   in_flight_ = false;
-  std::array<Eigen::Vector3d, kNumLegs> feet;
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) feet[leg] = foot_on_ground_world(state, leg);
-  ground_.reset(feet);
   // until the first solution: share the weight evenly
   const double share = config_.mpc.mass_kg * robot::kGravityMPerS2 / kNumLegs;
   for (auto& f : forces_) f = Eigen::Vector3d(0.0, 0.0, share);
@@ -95,10 +85,13 @@ bool LocomotionController::set_command(const LocomotionTarget& command) {
   return true;
 }
 
-std::array<double, kNumLegs> LocomotionController::scheduled_contact() const {
-  std::array<double, kNumLegs> contact{};
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) contact[leg] = scheduler_.leg_phase(leg).stance ? 1.0 : 0.0;
-  return contact;
+ContactSchedule LocomotionController::contact_schedule() const {
+  ContactSchedule schedule{};
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const LegPhase phase = scheduler_.leg_phase(leg);
+    schedule[leg] = {phase.stance ? 1.0 : 0.0, phase.stance_phase};
+  }
+  return schedule;
 }
 
 void LocomotionController::ramp_velocity() {
@@ -117,19 +110,8 @@ Eigen::Vector3d LocomotionController::hip_on_ground_world(std::size_t leg, const
   const double yaw_ahead = state.rpy.z() + velocity_.z() * yaw_ahead_s;
   const Eigen::Vector3d velocity_world = yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0);
   Eigen::Vector3d hip = state.position_world + yaw_rotation(yaw_ahead) * hip_body + velocity_world * ahead_s;
-  hip.z() = ground_.plane().height_at(hip.x(), hip.y());  // the ground plane under the hip
+  hip.z() = state.ground.height_at(hip.x(), hip.y());  // the ground plane under the hip
   return hip;
-}
-
-void LocomotionController::update_ground(const RobotState& state) {
-  std::array<Eigen::Vector3d, kNumLegs> feet;
-  std::array<bool, kNumLegs> planted{};
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    const LegPhase phase = scheduler_.leg_phase(leg);
-    planted[leg] = phase.stance && phase.stance_phase >= config_.planted_stance_phase;
-    feet[leg] = foot_on_ground_world(state, leg);
-  }
-  ground_.update(feet, planted, config_.tick_s);
 }
 
 void LocomotionController::post_mpc(const RobotState& state) {
@@ -139,8 +121,8 @@ void LocomotionController::post_mpc(const RobotState& state) {
   // yaw without wrap: the reference continues from the current yaw
   const double yaw = state.rpy.z();
   const double yaw_offset = std::clamp(wrap_angle(yaw_des_ - yaw), -0.2, 0.2);
-  const double pitch_ref = target_.pitch_rad + ground_.pitch_along(yaw);
-  const double roll_ref = ground_.roll_along(yaw);
+  const double pitch_ref = target_.pitch_rad + state.ground.pitch_along(yaw);
+  const double roll_ref = state.ground.roll_along(yaw);
   // the reference turns with the commanded yaw rate: velocity and position follow the arc
   const Eigen::Vector3d start(position_des_.x(), position_des_.y(), state.position_world.z());
   Eigen::Vector3d position = start;
@@ -150,7 +132,7 @@ void LocomotionController::post_mpc(const RobotState& state) {
     in.com_shift[k] = position - start;
     position += velocity_world * dt;
     auto& x = in.x_ref[k];
-    const double ground_z = ground_.plane().height_at(position.x(), position.y());
+    const double ground_z = state.ground.height_at(position.x(), position.y());
     x << roll_ref, pitch_ref, yaw_k, position.x(), position.y(), ground_z + target_.height_m + height_correction_m_,
         0.0, 0.0, velocity_.z(), velocity_world.x(), velocity_world.y(), 0.0, -robot::kGravityMPerS2;
   }
@@ -305,7 +287,6 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
   height_correction_m_ = std::clamp(
       height_correction_m_ + config_.height_integral_gain * (target_.height_m - state.height_m) * config_.tick_s,
       -config_.height_integral_limit_m, config_.height_integral_limit_m);
-  update_ground(state);
   if (tick_in_segment_ == 1) collect_mpc();
   if (tick_in_segment_ == 0) {
     // patterns change only where a cycle starts, so no foot is switched to stance mid-air

@@ -1,5 +1,6 @@
 // Mode 11's walking controller: gait schedule, convex MPC for the stance forces (in its own
 // thread), Bezier swing trajectories to Raibert footholds, and the joint commands of both.
+// Footholds, height and attitude references stand on the estimator's ground plane (state.ground).
 #pragma once
 
 #include <array>
@@ -10,10 +11,10 @@
 #include "control/locomotion/foothold.hpp"
 #include "control/locomotion/gait.hpp"
 #include "control/locomotion/mpc_worker.hpp"
+#include "core/contact_plan.hpp"
 #include "core/robot_model.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
-#include "estimation/ground_plane.hpp"
 
 namespace cerebellum {
 
@@ -51,9 +52,6 @@ struct LocomotionConfig {
   double vertical_leg_half_width_m = robot::kHipY + robot::kAbadLength;  // value bit1 = 1: feet under the hips
   double pigeon_toe_half_width_m = 0.11;     // value bit1 = 0: energy-saving narrower stance
   Eigen::Vector3d com_offset_body{0.013, 0.0, 0.0};
-  // ground plane for footholds, height and attitude references: feet count from this far into stance
-  GroundPlaneTrackerConfig ground;
-  double planted_stance_phase = 0.2;
   int failed_solves_to_give_up = 3;
 };
 
@@ -90,13 +88,11 @@ class LocomotionController {
   const LocomotionTelemetry& telemetry() const { return telemetry_; }
   const GaitScheduler& scheduler() const { return scheduler_; }
   const Eigen::Vector3d& ramped_velocity() const { return velocity_; }
-  const GroundPlane& ground_plane() const { return ground_.plane(); }
-  // stance probability of each leg from the schedule (for the estimator)
-  std::array<double, kNumLegs> scheduled_contact() const;
+  // each leg's place in the schedule; after compute(), the contacts planned for the next tick
+  ContactSchedule contact_schedule() const;
 
  private:
   void ramp_velocity();
-  void update_ground(const RobotState& state);
   void change_pattern_if_due(const RobotState& state);
   void post_mpc(const RobotState& state);
   void collect_mpc();
@@ -127,7 +123,6 @@ class LocomotionController {
   Eigen::Matrix3d swing_frame_ = Eigen::Matrix3d::Identity();
   bool in_flight_ = false;
   std::array<Eigen::Vector3d, kNumLegs> forces_{};
-  GroundPlaneTracker ground_;
   MpcInput mpc_input_;
   MpcOutput mpc_output_;
   int consecutive_failures_ = 0;
