@@ -6,7 +6,7 @@
 #include <random>
 #include <vector>
 
-#include "../tests/control/condensed_mpc_qp.hpp"
+#include "../tests/control/qp/condensed_mpc_qp.hpp"
 #include "control/qp/qp_solver_factory.hpp"
 
 namespace cerebellum::qp {

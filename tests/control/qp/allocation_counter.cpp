@@ -1,4 +1,4 @@
-#include "control/allocation_counter.hpp"
+#include "control/qp/allocation_counter.hpp"
 
 #include <cstddef>
 

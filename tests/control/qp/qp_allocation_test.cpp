@@ -5,10 +5,10 @@
 #include <random>
 #include <vector>
 
-#include "control/allocation_counter.hpp"
-#include "control/condensed_mpc_qp.hpp"
+#include "control/qp/allocation_counter.hpp"
+#include "control/qp/condensed_mpc_qp.hpp"
 #include "control/qp/goldfarb_idnani_solver.hpp"
-#include "control/random_qp.hpp"
+#include "control/qp/random_qp.hpp"
 
 namespace cerebellum::qp {
 namespace {

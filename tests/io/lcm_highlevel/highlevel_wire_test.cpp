@@ -6,7 +6,7 @@
 #include <limits>
 #include <vector>
 
-#include "io/highlevel/big_endian_writer.hpp"
+#include "io/lcm_highlevel/big_endian_writer.hpp"
 
 namespace cerebellum {
 namespace {

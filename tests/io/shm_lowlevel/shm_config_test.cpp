@@ -7,7 +7,7 @@
 
 #include "app/mc_config.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
-#include "shm/shm_test_names.hpp"
+#include "io/shm_lowlevel/shm_test_names.hpp"
 
 namespace cerebellum {
 namespace {

@@ -10,7 +10,7 @@
 
 #include "control/qp/goldfarb_idnani_solver.hpp"
 #include "control/qp/qp_solver_factory.hpp"
-#include "control/random_qp.hpp"
+#include "control/qp/random_qp.hpp"
 
 namespace cerebellum::qp {
 namespace {

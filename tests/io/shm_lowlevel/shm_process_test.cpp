@@ -16,7 +16,7 @@
 #include <thread>
 #include <vector>
 
-#include "shm/shm_test_names.hpp"
+#include "io/shm_lowlevel/shm_test_names.hpp"
 
 extern char** environ;
 

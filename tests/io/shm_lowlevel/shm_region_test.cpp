@@ -11,7 +11,7 @@
 #include <cstring>
 #include <stdexcept>
 
-#include "shm/shm_test_names.hpp"
+#include "io/shm_lowlevel/shm_test_names.hpp"
 
 namespace cerebellum {
 namespace {

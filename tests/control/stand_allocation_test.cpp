@@ -1,7 +1,7 @@
 // The standing controllers run every tick without touching the heap (after their first tick).
 #include <gtest/gtest.h>
 
-#include "control/allocation_counter.hpp"
+#include "control/qp/allocation_counter.hpp"
 #include "control/qp_stand.hpp"
 #include "control/self_righting.hpp"
 #include "core/leg_kinematics.hpp"

@@ -9,8 +9,8 @@
 #include <thread>
 
 #include "io/shm_lowlevel/shm_lowlevel_source.hpp"
-#include "shm/shm_test_client.hpp"
-#include "shm/shm_test_names.hpp"
+#include "io/shm_lowlevel/shm_test_client.hpp"
+#include "io/shm_lowlevel/shm_test_names.hpp"
 
 namespace cerebellum {
 namespace {

@@ -5,8 +5,8 @@
 
 #include "control/qp/alglib_qp_solver.hpp"
 #include "control/qp/goldfarb_idnani_solver.hpp"
-#include "control/qp_kkt_check.hpp"
-#include "control/random_qp.hpp"
+#include "control/qp/qp_kkt_check.hpp"
+#include "control/qp/random_qp.hpp"
 
 namespace cerebellum::qp {
 namespace {

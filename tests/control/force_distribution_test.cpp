@@ -8,7 +8,7 @@
 
 #include "control/balance_controller.hpp"
 #include "control/qp/alglib_qp_solver.hpp"
-#include "control/qp_kkt_check.hpp"
+#include "control/qp/qp_kkt_check.hpp"
 
 namespace cerebellum {
 namespace {

@@ -14,8 +14,8 @@
 
 #include "app/mc.hpp"
 #include "app/simulated_robot.hpp"
-#include "io/highlevel/big_endian_writer.hpp"
-#include "io/highlevel/raw_lcm_peer.hpp"
+#include "io/lcm_highlevel/big_endian_writer.hpp"
+#include "io/lcm_highlevel/raw_lcm_peer.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
 
 namespace cerebellum {

@@ -4,10 +4,10 @@
 
 #include <random>
 
-#include "control/condensed_mpc_qp.hpp"
+#include "control/qp/condensed_mpc_qp.hpp"
 #include "control/qp/alglib_qp_solver.hpp"
 #include "control/qp/goldfarb_idnani_solver.hpp"
-#include "control/qp_kkt_check.hpp"
+#include "control/qp/qp_kkt_check.hpp"
 #include "core/robot_model.hpp"
 
 namespace cerebellum::qp {

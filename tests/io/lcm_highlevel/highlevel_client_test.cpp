@@ -10,7 +10,7 @@
 
 #include "app/mc.hpp"
 #include "app/simulated_robot.hpp"
-#include "io/highlevel/raw_lcm_peer.hpp"
+#include "io/lcm_highlevel/raw_lcm_peer.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
 
 namespace cerebellum {
