@@ -18,7 +18,7 @@ PureDamperConfig pure_damper_config(const ModeSetConfig& config) {
 WalkingGaitsConfig walking_config(const ModeSetConfig& config) {
   WalkingGaitsConfig walking;
   walking.locomotion.tick_s = config.loop_period_s;
-  walking.locomotion.ticks_per_segment = static_cast<int>(std::lround(0.03 / config.loop_period_s));
+  walking.locomotion.ticks_per_segment = static_cast<int>(std::lround(kGaitSegmentS / config.loop_period_s));
   walking.failure_damping_kd = config.damping_kd;
   return walking;
 }

@@ -5,17 +5,12 @@
 #include "core/robot_model.hpp"
 
 namespace cerebellum {
-namespace {
-
-// clamp into [lower, upper]; true when the value had to move
 bool clamp_into(double& value, double lower, double upper) {
   const double clamped = std::clamp(value, lower, upper);
   const bool moved = clamped != value;
   value = clamped;
   return moved;
 }
-
-}  // namespace
 
 CommandClampCount clamp_command(JointCommand& command, const CommandLimits& limits, double kp_acts_above) {
   CommandClampCount count;

@@ -22,4 +22,7 @@ struct CommandClampCount {
 // (elsewhere the position target does not act)
 CommandClampCount clamp_command(JointCommand& command, const CommandLimits& limits, double kp_acts_above = 0.0);
 
+// clamp one value into [lower, upper]; true when it had to move (the low-level rules count them)
+bool clamp_into(double& value, double lower, double upper);
+
 }  // namespace cerebellum

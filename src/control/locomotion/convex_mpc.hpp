@@ -8,6 +8,7 @@
 #include <array>
 #include <memory>
 
+#include "control/locomotion/gait_table.hpp"
 #include "control/qp/qp_problem.hpp"
 #include "control/qp/qp_solution.hpp"
 #include "control/qp/qp_solver.hpp"
@@ -20,7 +21,7 @@ inline constexpr int kMpcHorizon = 10;
 inline constexpr int kSrbStates = 13;
 
 struct ConvexMpcConfig {
-  double dt_s = 0.03;  // one MPC step = one gait segment
+  double dt_s = kGaitSegmentS;  // one MPC step = one gait segment
   double mass_kg = robot::kMpcMassKg;
   Eigen::Vector3d inertia_diag{robot::kMpcInertiaDiag[0], robot::kMpcInertiaDiag[1], robot::kMpcInertiaDiag[2]};
   // state weights: roll, pitch, yaw, x, y, z, wx, wy, wz, vx, vy, vz

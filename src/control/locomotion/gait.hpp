@@ -48,7 +48,7 @@ struct LegPhase {
 // runs a pattern in time: phase per leg and the contact table of the MPC horizon
 class GaitScheduler {
  public:
-  explicit GaitScheduler(double segment_s = 0.03);
+  explicit GaitScheduler(double segment_s = kGaitSegmentS);
 
   // switch pattern, keeping the cycle phase (fraction of the cycle) continuous
   void set_pattern(const GaitPattern& pattern);

@@ -15,7 +15,11 @@ enum class GaitKind {
   FrequencyAdapting,  // the walking controller picks the cycle from the commanded speed
 };
 
-// a walking cycle in 30 ms MPC segments
+// one segment of a contact schedule, and one MPC step: the reference's 30 ms unit (a user gait's
+// section durations count in it too)
+inline constexpr double kGaitSegmentS = 0.03;
+
+// a walking cycle in segments of kGaitSegmentS
 struct GaitCycle {
   int period_segments;
   int stance_segments;  // every leg's stance length

@@ -20,7 +20,7 @@ namespace cerebellum {
 
 struct LocomotionConfig {
   double tick_s = 0.002;
-  int ticks_per_segment = 15;  // 30 ms MPC step at 500 Hz
+  int ticks_per_segment = 15;  // kGaitSegmentS at 500 Hz (the MC sets it from its loop period)
   ConvexMpcConfig mpc;
   FootholdConfig foothold;
   double default_height_m = 0.25;

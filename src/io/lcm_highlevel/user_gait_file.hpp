@@ -10,11 +10,12 @@
 #include <string_view>
 #include <vector>
 
+#include "control/locomotion/gait_table.hpp"
 #include "modes/high_level_command.hpp"
 
 namespace cerebellum {
 
-inline constexpr double kGaitSectionUnitS = 0.03;  // one unit of a section's duration
+inline constexpr double kGaitSectionUnitS = kGaitSegmentS;  // one unit of a section's duration
 inline constexpr std::size_t kMaxGaitEntries = 1000;
 
 struct GaitSection {

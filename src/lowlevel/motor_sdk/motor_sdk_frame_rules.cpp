@@ -7,18 +7,6 @@
 #include "safety/command_clamp.hpp"
 
 namespace cerebellum {
-namespace {
-
-// clamp into [lower, upper]; true when the value had to move
-bool clamp_into(double& value, double lower, double upper) {
-  const double clamped = std::clamp(value, lower, upper);
-  const bool moved = clamped != value;
-  value = clamped;
-  return moved;
-}
-
-}  // namespace
-
 RangeClampCount clamp_to_ranges(JointCommand& frame, const MotorSdkParameters& parameters) {
   return clamp_command(frame, parameters.limits, parameters.zero_tolerance);
 }
