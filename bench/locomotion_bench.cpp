@@ -98,8 +98,8 @@ Tracking track(Run& run, int gait, const Eigen::Vector3d& command, double settle
                    const double elapsed = record.state.time_s - start;
                    if (record.tick % 10 == 0) {
                      csv << label << ',' << elapsed << ',' << command.x() << ',' << estimate.x() << ',' << truth.x()
-                         << ',' << command.y() << ',' << estimate.y() << ',' << truth.y() << ',' << command.z()
-                         << ',' << estimate.z() << ',' << truth.z() << '\n';
+                         << ',' << command.y() << ',' << estimate.y() << ',' << truth.y() << ',' << command.z() << ','
+                         << estimate.z() << ',' << truth.z() << '\n';
                    }
                    if (elapsed >= settle_s) {
                      t.true_mean += truth;
@@ -124,9 +124,12 @@ Row tracking_row(const std::string& name, int gait, const Eigen::Vector3d& comma
   const Tracking t = track(run, gait, command, 2.0, 5.0, csv, name);
   const double wanted = command[axis];
   const double error = std::abs(t.true_mean[axis] - wanted) / std::abs(wanted);
-  return {name + " (gait " + std::to_string(gait) + ")", fmt("%.2f", wanted),
+  return {name + " (gait " + std::to_string(gait) + ")",
+          fmt("%.2f", wanted),
           fmt("%.3f", t.true_mean[axis]) + " (est " + fmt("%.3f", t.estimated_mean[axis]) + ")",
-          fmt("%.1f %%", 100 * error), fmt("<= %.0f %%", 100 * limit), t.stayed_up && error <= limit};
+          fmt("%.1f %%", 100 * error),
+          fmt("<= %.0f %%", 100 * limit),
+          t.stayed_up && error <= limit};
 }
 
 Row odometry_row(std::ofstream& csv) {
@@ -139,8 +142,12 @@ Row odometry_row(std::ofstream& csv) {
   const Eigen::Vector2d truth(g1.position[0] - g0.position[0], g1.position[1] - g0.position[1]);
   const Eigen::Vector2d estimate = (p1 - p0).head<2>();
   const double drift = (estimate - truth).norm() / truth.norm();
-  return {"odometry drift over a walk", fmt("%.1f m", truth.norm()), fmt("%.2f m error", (estimate - truth).norm()),
-          fmt("%.1f %%", 100 * drift), "<= 5 %", drift <= 0.05};
+  return {"odometry drift over a walk",
+          fmt("%.1f m", truth.norm()),
+          fmt("%.2f m error", (estimate - truth).norm()),
+          fmt("%.1f %%", 100 * drift),
+          "<= 5 %",
+          drift <= 0.05};
 }
 
 Row push_row(double impulse_n_s) {
@@ -155,9 +162,12 @@ Row push_row(double impulse_n_s) {
                  [&](const CycleRecord&) { up &= upright(run.mc.simulation().ground_truth()); });
   const auto v = run.mc.simulation().ground_truth().velocity_world;
   const bool settled = std::hypot(v[0], v[1]) < 0.2;
-  return {fmt("lateral push %.0f N s while trotting in place", impulse_n_s), fmt("%.0f N x 0.1 s", impulse_n_s * 10),
+  return {fmt("lateral push %.0f N s while trotting in place", impulse_n_s),
+          fmt("%.0f N x 0.1 s", impulse_n_s * 10),
           up ? "stayed up" : "fell",
-          fmt("%.2f m/s after 3 s", std::hypot(v[0], v[1])), "no fall", up && settled};
+          fmt("%.2f m/s after 3 s", std::hypot(v[0], v[1])),
+          "no fall",
+          up && settled};
 }
 
 Row terrain_row(const std::string& name, const std::string& model, double climb_m) {
@@ -173,8 +183,12 @@ Row terrain_row(const std::string& name, const std::string& model, double climb_
   });
   const GroundTruth g = run.mc.simulation().ground_truth();
   const bool climbed = g.position[2] > climb_m + 0.2;
-  return {name, "0.4 m/s, gait 27", fmt("x %.2f m", g.position[0]), fmt("z %.3f m", g.position[2]),
-          "climbs without falling", up && climbed};
+  return {name,
+          "0.4 m/s, gait 27",
+          fmt("x %.2f m", g.position[0]),
+          fmt("z %.3f m", g.position[2]),
+          "climbs without falling",
+          up && climbed};
 }
 
 // random gaits and velocities within the limits, each held 1-3 s; a fall, or a protective stop
@@ -209,10 +223,13 @@ Row soak_row(double minutes, unsigned seed) {
     run.client.run(high_level_command(ModeId::RecoveryStand, 0), 8.0);
     recovered += upright(run.mc.simulation().ground_truth()) && run.mc.machine().status().order_process_bar >= 95;
   }
-  return {fmt("random-command soak, %.0f min", minutes), std::to_string(commands) + " commands",
+  return {fmt("random-command soak, %.0f min", minutes),
+          std::to_string(commands) + " commands",
           std::to_string(falls) + " falls, " + std::to_string(stops) + " protective stops, " +
               std::to_string(recovered) + " recovered by mode 12",
-          "", "no fall", falls + stops == 0};
+          "",
+          "no fall",
+          falls + stops == 0};
 }
 
 }  // namespace
@@ -237,12 +254,30 @@ int main(int argc, char** argv) {
   std::vector<Row> rows;
   // each scenario under a short name for --only
   const std::vector<std::pair<std::string, std::function<Row()>>> scenarios = {
-      {"forward0.3", [&] { return tracking_row("forward 0.3 m/s", 27, {0.3, 0, 0}, 0, 0.10, csv); }},
-      {"forward0.8", [&] { return tracking_row("forward 0.8 m/s", 3, {0.8, 0, 0}, 0, 0.10, csv); }},
-      {"forward1.2", [&] { return tracking_row("forward 1.2 m/s", 3, {1.2, 0, 0}, 0, 0.10, csv); }},
-      {"forward1.6", [&] { return tracking_row("forward 1.6 m/s", 10, {1.6, 0, 0}, 0, 0.10, csv); }},
-      {"lateral", [&] { return tracking_row("lateral 0.4 m/s", 3, {0, 0.4, 0}, 1, 0.15, csv); }},
-      {"yaw", [&] { return tracking_row("yaw 2.0 rad/s", 10, {0, 0, 2.0}, 2, 0.15, csv); }},
+      {"forward0.3",
+       [&] {
+         return tracking_row("forward 0.3 m/s", 27, {0.3, 0, 0}, 0, 0.10, csv);
+       }},
+      {"forward0.8",
+       [&] {
+         return tracking_row("forward 0.8 m/s", 3, {0.8, 0, 0}, 0, 0.10, csv);
+       }},
+      {"forward1.2",
+       [&] {
+         return tracking_row("forward 1.2 m/s", 3, {1.2, 0, 0}, 0, 0.10, csv);
+       }},
+      {"forward1.6",
+       [&] {
+         return tracking_row("forward 1.6 m/s", 10, {1.6, 0, 0}, 0, 0.10, csv);
+       }},
+      {"lateral",
+       [&] {
+         return tracking_row("lateral 0.4 m/s", 3, {0, 0.4, 0}, 1, 0.15, csv);
+       }},
+      {"yaw",
+       [&] {
+         return tracking_row("yaw 2.0 rad/s", 10, {0, 0, 2.0}, 2, 0.15, csv);
+       }},
       {"odometry", [&] { return odometry_row(csv); }},
       {"push5", [] { return push_row(5.0); }},
       {"push10", [] { return push_row(10.0); }},
@@ -263,8 +298,9 @@ int main(int argc, char** argv) {
                 r.error.c_str(), r.target.c_str(), r.pass ? "yes" : "NO");
     failed += !r.pass;
   }
-  std::printf("\nreal-time factor of the whole MC with locomotion (one core if pinned): %.1fx (%.0f robot s in %.1f s)\n",
-              robot_seconds_total() / wall, robot_seconds_total(), wall);
+  std::printf(
+      "\nreal-time factor of the whole MC with locomotion (one core if pinned): %.1fx (%.0f robot s in %.1f s)\n",
+      robot_seconds_total() / wall, robot_seconds_total(), wall);
   std::printf("velocity traces: %s\n", (out_dir / "locomotion_velocity.csv").string().c_str());
   return failed == 0 ? 0 : 1;
 }

@@ -33,8 +33,8 @@ void BM_StandLoopOneRobotSecond(benchmark::State& bench) {
     robot_seconds += 1.0;
   }
   bench.counters["rtf"] = benchmark::Counter(robot_seconds, benchmark::Counter::kIsRate);
-  bench.counters["tick_us"] = benchmark::Counter(robot_seconds * 500 * 1e-6,
-                                                     benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
+  bench.counters["tick_us"] =
+      benchmark::Counter(robot_seconds * 500 * 1e-6, benchmark::Counter::kIsRate | benchmark::Counter::kInvert);
 }
 BENCHMARK(BM_StandLoopOneRobotSecond)->Arg(0)->Arg(1)->ArgName("noise")->Unit(benchmark::kMillisecond)->MinTime(2.0);
 

@@ -60,7 +60,9 @@ class StreamingClient {
   // flips the torque target; returns its generation
   int next_step() { return generation_.fetch_add(1) + 1; }
   bool reflected(int generation) const { return reflected_generation_.load() >= generation; }
-  double latency_s() const { return std::chrono::duration<double>(reflected_at_.load() - published_at_.load()).count(); }
+  double latency_s() const {
+    return std::chrono::duration<double>(reflected_at_.load() - published_at_.load()).count();
+  }
   int err_flag() const { return err_flag_.load(); }
 
  private:
@@ -177,5 +179,6 @@ void motor_ctrl_to_spi_data_latency(benchmark::State& state, double seconds) {
 }  // namespace cerebellum
 
 int main(int argc, char** argv) {
-  return cerebellum::run_timed_benchmark(argc, argv, "MotorCtrlToSpiDataLatency", 30.0, cerebellum::motor_ctrl_to_spi_data_latency);
+  return cerebellum::run_timed_benchmark(argc, argv, "MotorCtrlToSpiDataLatency", 30.0,
+                                         cerebellum::motor_ctrl_to_spi_data_latency);
 }

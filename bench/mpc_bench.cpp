@@ -20,9 +20,9 @@ using namespace cerebellum;
 MpcInput varied_input(std::mt19937& rng, bool trot, int phase) {
   std::normal_distribution<double> noise(0.0, 1.0);
   MpcInput in;
-  in.x0 << 0.02 * noise(rng), 0.02 * noise(rng), 0.3 * noise(rng), 0, 0, 0.25 + 0.01 * noise(rng),
-      0.2 * noise(rng), 0.2 * noise(rng), 0.3 * noise(rng), 0.8 + 0.1 * noise(rng), 0.05 * noise(rng),
-      0.05 * noise(rng), -robot::kGravityMPerS2;
+  in.x0 << 0.02 * noise(rng), 0.02 * noise(rng), 0.3 * noise(rng), 0, 0, 0.25 + 0.01 * noise(rng), 0.2 * noise(rng),
+      0.2 * noise(rng), 0.3 * noise(rng), 0.8 + 0.1 * noise(rng), 0.05 * noise(rng), 0.05 * noise(rng),
+      -robot::kGravityMPerS2;
   for (int k = 0; k < kMpcHorizon; ++k) {
     in.x_ref[k] = in.x0;
     in.x_ref[k].head<3>() << 0, 0, in.x0[2];
@@ -68,9 +68,8 @@ void time_steps(benchmark::State& bench, bool trot, Step&& step) {
 }
 
 void BM_MpcBuildAndSolve(benchmark::State& bench) {
-  time_steps(bench, bench.range(0) != 0, [](ConvexMpc& mpc, const MpcInput& in) {
-    benchmark::DoNotOptimize(mpc.solve(in));
-  });
+  time_steps(bench, bench.range(0) != 0,
+             [](ConvexMpc& mpc, const MpcInput& in) { benchmark::DoNotOptimize(mpc.solve(in)); });
 }
 BENCHMARK(BM_MpcBuildAndSolve)->Arg(1)->Arg(0)->ArgName("trot")->Unit(benchmark::kMillisecond)->Iterations(3);
 

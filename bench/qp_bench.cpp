@@ -52,14 +52,11 @@ void solve_qp(benchmark::State& state, QpSolverKind kind, Shape shape) {
   state.counters["iters"] = benchmark::Counter(iterations, benchmark::Counter::kAvgIterations);
 }
 
-BENCHMARK_CAPTURE(solve_qp, gi_trot_60x100, QpSolverKind::GoldfarbIdnani, Shape::Trot60)
-    ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(solve_qp, alglib_trot_60x100, QpSolverKind::Alglib, Shape::Trot60)
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(solve_qp, gi_trot_60x100, QpSolverKind::GoldfarbIdnani, Shape::Trot60)->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(solve_qp, alglib_trot_60x100, QpSolverKind::Alglib, Shape::Trot60)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(solve_qp, gi_full_120x200, QpSolverKind::GoldfarbIdnani, Shape::Full120)
     ->Unit(benchmark::kMicrosecond);
-BENCHMARK_CAPTURE(solve_qp, alglib_full_120x200, QpSolverKind::Alglib, Shape::Full120)
-    ->Unit(benchmark::kMicrosecond);
+BENCHMARK_CAPTURE(solve_qp, alglib_full_120x200, QpSolverKind::Alglib, Shape::Full120)->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(solve_qp, gi_balance_12x20, QpSolverKind::GoldfarbIdnani, Shape::Balance12)
     ->Unit(benchmark::kMicrosecond);
 BENCHMARK_CAPTURE(solve_qp, alglib_balance_12x20, QpSolverKind::Alglib, Shape::Balance12)

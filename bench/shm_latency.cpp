@@ -103,7 +103,8 @@ void shm_command_to_state_latency(benchmark::State& state, double seconds) {
       }
       const Clock::time_point flag_set = Clock::now();
       // taken, and a state newer than the one before the flag was set is complete
-      while (__atomic_load_n(command_flag, __ATOMIC_ACQUIRE) != 0 || __atomic_load_n(state_flag, __ATOMIC_ACQUIRE) == 0 ||
+      while (__atomic_load_n(command_flag, __ATOMIC_ACQUIRE) != 0 ||
+             __atomic_load_n(state_flag, __ATOMIC_ACQUIRE) == 0 ||
              __atomic_load_n(stamp, __ATOMIC_ACQUIRE) == stamp_before) {
         sched_yield();
       }
@@ -133,5 +134,6 @@ void shm_command_to_state_latency(benchmark::State& state, double seconds) {
 }  // namespace cerebellum
 
 int main(int argc, char** argv) {
-  return cerebellum::run_timed_benchmark(argc, argv, "ShmCommandToStateLatency", 60.0, cerebellum::shm_command_to_state_latency);
+  return cerebellum::run_timed_benchmark(argc, argv, "ShmCommandToStateLatency", 60.0,
+                                         cerebellum::shm_command_to_state_latency);
 }

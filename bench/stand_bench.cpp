@@ -49,8 +49,9 @@ BENCHMARK(BM_QpStandTick)->Arg(0)->Arg(1);
 
 void BM_ForceDistribution(benchmark::State& bench) {
   ForceDistribution distribution;
-  const std::array<Eigen::Vector3d, kNumLegs> feet{Eigen::Vector3d(0.17, -0.13, -0.24), Eigen::Vector3d(0.17, 0.13, -0.24),
-                                                   Eigen::Vector3d(-0.17, -0.13, -0.24), Eigen::Vector3d(-0.17, 0.13, -0.24)};
+  const std::array<Eigen::Vector3d, kNumLegs> feet{
+      Eigen::Vector3d(0.17, -0.13, -0.24), Eigen::Vector3d(0.17, 0.13, -0.24), Eigen::Vector3d(-0.17, -0.13, -0.24),
+      Eigen::Vector3d(-0.17, 0.13, -0.24)};
   const std::array<double, kNumLegs> limits{150, 150, 150, 150};
   Vector6d wrench;
   wrench << 3.0, -2.0, 85.0, 0.5, -0.8, 0.2;

@@ -23,8 +23,8 @@ struct Step {
   int gait_id;
   std::array<float, 3> rpy_des;
   std::array<float, 3> pos_des;
-  int duration_ms;     // 0: runs until replaced
-  bool must_succeed;   // the example fails when this step does not complete
+  int duration_ms;    // 0: runs until replaced
+  bool must_succeed;  // the example fails when this step does not complete
 };
 
 constexpr milliseconds kModeTimeout{10000};
@@ -112,7 +112,8 @@ int main() {
     std::fflush(stdout);
     // a timed step holds for its duration before the next one is sent
     const auto hold_until = start + milliseconds(step.duration_ms);
-    while (std::chrono::steady_clock::now() < hold_until && !interrupted()) std::this_thread::sleep_for(milliseconds(10));
+    while (std::chrono::steady_clock::now() < hold_until && !interrupted())
+      std::this_thread::sleep_for(milliseconds(10));
   }
   client.stop();
   std::printf("basic_motion: %s\n", failures == 0 ? "done" : "failed");

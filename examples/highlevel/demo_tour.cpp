@@ -48,7 +48,8 @@ class Tour {
   void reach(const std::string& what, const robot_control_cmd_lcmt& c, int seconds) {
     begin(what);
     HighLevelClientStatus status = client_.send(c);
-    if (status == HighLevelClientStatus::Ok) status = client_.wait_for_mode(c.mode, c.gait_id, milliseconds(1000 * seconds));
+    if (status == HighLevelClientStatus::Ok)
+      status = client_.wait_for_mode(c.mode, c.gait_id, milliseconds(1000 * seconds));
     end(status == HighLevelClientStatus::Ok, cerebellum::to_string(status));
   }
 
@@ -74,8 +75,9 @@ class Tour {
     const auto response = client_.latest_response();
     const bool in_mode = response && response->mode == c.mode;
     // the MC ramps the yaw rate (3 rad/s^2): a step after a turn still turns by about 10 degrees
-    const bool moved = std::abs(distance - expect_m) <= std::max(0.35 * expect_m, 0.15) &&
-                       std::abs(std::abs(turn) - std::abs(expect_turn_rad)) <= std::max(0.35 * std::abs(expect_turn_rad), 0.3);
+    const bool moved =
+        std::abs(distance - expect_m) <= std::max(0.35 * expect_m, 0.15) &&
+        std::abs(std::abs(turn) - std::abs(expect_turn_rad)) <= std::max(0.35 * std::abs(expect_turn_rad), 0.3);
     char detail[128];
     std::snprintf(detail, sizeof(detail), "%.2f m, %+.0f deg", distance, turn * 180 / kPi);
     end(status == HighLevelClientStatus::Ok && in_mode && moved, detail);
@@ -136,7 +138,8 @@ int main(int argc, char** argv) {
 
   tour.reach("locomotion stand (11, gait 1)", command(11, 1), 10);
   for (int side = 1; side <= 4; ++side) {
-    tour.hold("square side " + std::to_string(side) + " (trot 27)", command(11, 27, speed), side_m / speed, side_m, 0.0);
+    tour.hold("square side " + std::to_string(side) + " (trot 27)", command(11, 27, speed), side_m / speed, side_m,
+              0.0);
     tour.hold("turn left 90 deg", command(11, 27, 0.0, 1.0), kPi / 2, 0.0, kPi / 2);
   }
   if (!short_tour) tour.hold("turn on the spot, fast trot (10)", command(11, 10, 0.0, 2.0), kPi, 0.0, 2 * kPi);

@@ -56,9 +56,9 @@ HighLevelClientStatus HighLevelClient::start() {
     last_error_ = "heartbeat_period must be in (0, 100] ms, got " + std::to_string(options_.heartbeat_period.count());
     return HighLevelClientStatus::InvalidArgument;
   }
-  for (const auto& [url, lcm] : {std::pair{&options_.command_url, &command_lcm_},
-                                 std::pair{&options_.response_url, &response_lcm_},
-                                 std::pair{&options_.odometry_url, &odometry_lcm_}}) {
+  for (const auto& [url, lcm] :
+       {std::pair{&options_.command_url, &command_lcm_}, std::pair{&options_.response_url, &response_lcm_},
+        std::pair{&options_.odometry_url, &odometry_lcm_}}) {
     *lcm = std::make_unique<lcm::LCM>(*url);
     if (!(*lcm)->good()) {
       const std::lock_guard lock(feedback_mutex_);
@@ -129,7 +129,8 @@ HighLevelClientStatus HighLevelClient::wait_for_mode(int mode, std::optional<int
     if (!running_.load()) return HighLevelClientStatus::NotRunning;
     if (response_) {
       const robot_control_response_lcmt& r = *response_;
-      const bool reached = r.mode == mode && (!gait_id || r.gait_id == *gait_id) && r.order_process_bar >= kFinishedPercent;
+      const bool reached =
+          r.mode == mode && (!gait_id || r.gait_id == *gait_id) && r.order_process_bar >= kFinishedPercent;
       if (reached) return HighLevelClientStatus::Ok;
       if (r.switch_status == kBanTransition && responses_ >= responses_at_send + kResponsesBeforeRefusal) {
         return HighLevelClientStatus::Refused;

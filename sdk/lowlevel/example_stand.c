@@ -21,12 +21,12 @@
 #include "lowlevel/lowlevel_sync.h"
 
 #define PI 3.14159265358979323846
-#define DEG(x) ((x) * PI / 180.0)
+#define DEG(x) ((x)*PI / 180.0)
 #define PERIOD_NS 1000000L
-#define FOLD_S 1.0        /* current pose -> lying */
-#define RISE_S 1.5        /* lying -> stand */
+#define FOLD_S 1.0 /* current pose -> lying */
+#define RISE_S 1.5 /* lying -> stand */
 #define WAIT_FOR_STATE_S 10.0
-#define STATE_LOST_S 1.0  /* no new state for this long: the daemon is gone */
+#define STATE_LOST_S 1.0 /* no new state for this long: the daemon is gone */
 #define KP 60.0f
 #define KD 2.0f
 

@@ -46,12 +46,7 @@ typedef enum lowlevel_consumer_def {
 } lowlevel_consumer_t;
 
 /* index into legs[] */
-typedef enum lowlevel_leg_def {
-  FRONT_RIGHT = 0,
-  FRONT_LEFT = 1,
-  BACK_RIGHT = 2,
-  BACK_LEFT = 3
-} lowlevel_leg_t;
+typedef enum lowlevel_leg_def { FRONT_RIGHT = 0, FRONT_LEFT = 1, BACK_RIGHT = 2, BACK_LEFT = 3 } lowlevel_leg_t;
 
 /* one motor's command: tau = t_ff + kp (p_des - p) + kd (v_des - v) */
 typedef struct __attribute__((packed)) joint_control_def {
@@ -82,9 +77,9 @@ typedef struct __attribute__((packed)) spline_cmd_data_def {
 #define JOINT_STATE_OVER_TEMPERATURE (1u << 3)
 #define JOINT_STATE_OVER_SPEED (1u << 4)
 #define JOINT_STATE_ENCODER_FAULT (1u << 5)
-#define JOINT_STATE_TEMPERATURE_SHIFT 8     /* bits 8..15: temperature + 40 (-40..215 deg C) */
+#define JOINT_STATE_TEMPERATURE_SHIFT 8 /* bits 8..15: temperature + 40 (-40..215 deg C) */
 #define JOINT_STATE_TEMPERATURE_OFFSET_C 40
-#define JOINT_STATE_BUS_VOLTAGE_SHIFT 16    /* bits 16..23: bus voltage (V) */
+#define JOINT_STATE_BUS_VOLTAGE_SHIFT 16 /* bits 16..23: bus voltage (V) */
 
 typedef struct __attribute__((packed)) joint_state_def {
   int32_t flags;

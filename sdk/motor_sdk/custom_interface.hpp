@@ -10,16 +10,16 @@
 #include <memory>
 
 struct RobotData {
-  float q[12];                  // joint angles, rad
-  float qd[12];                 // joint velocities, rad/s
-  float tau[12];                // joint torques, N m
-  float quat[4];                // trunk orientation (w, x, y, z)
-  float rpy[3];                 // roll, pitch, yaw, rad
-  float acc[3];                 // trunk acceleration, world frame, m/s^2
-  float omega[3];               // trunk angular velocity, world frame, rad/s
-  float ctrl_topic_interval;    // ms between the MC's last two received commands
-  uint32_t motor_flags[12];     // per motor: mode bits 30..31, error and warning bits below
-  int16_t err_flag;             // motor_ctrl_state.err_flag (bit1: activate with all-zero frames)
+  float q[12];                // joint angles, rad
+  float qd[12];               // joint velocities, rad/s
+  float tau[12];              // joint torques, N m
+  float quat[4];              // trunk orientation (w, x, y, z)
+  float rpy[3];               // roll, pitch, yaw, rad
+  float acc[3];               // trunk acceleration, world frame, m/s^2
+  float omega[3];             // trunk angular velocity, world frame, rad/s
+  float ctrl_topic_interval;  // ms between the MC's last two received commands
+  uint32_t motor_flags[12];   // per motor: mode bits 30..31, error and warning bits below
+  int16_t err_flag;           // motor_ctrl_state.err_flag (bit1: activate with all-zero frames)
 };
 
 // each motor runs tau = tau_des + kp_des (q_des - q) + kd_des (qd_des - qd)

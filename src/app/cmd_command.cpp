@@ -26,15 +26,16 @@ double seconds_since(Clock::time_point start) { return std::chrono::duration<dou
 milliseconds to_ms(double seconds) { return milliseconds(static_cast<long long>(seconds * 1000.0)); }
 
 const char* switch_status_name(int status) {
-  static constexpr std::array<const char*, 8> kNames{"Done",  "TRANSITIONING", "ESTOP",     "EDAMP",
-                                                     "LIFTED", "BAN_TRANS",    "OVER_HEAT", "LOW_BAT"};
+  static constexpr std::array<const char*, 8> kNames{"Done",   "TRANSITIONING", "ESTOP",     "EDAMP",
+                                                     "LIFTED", "BAN_TRANS",     "OVER_HEAT", "LOW_BAT"};
   return status >= 0 && status < static_cast<int>(kNames.size()) ? kNames[static_cast<std::size_t>(status)] : "?";
 }
 
 std::string describe(const robot_control_response_lcmt& r) {
   char text[160];
-  std::snprintf(text, sizeof text, "mode %d gait %d bar %d switch %d (%s) contact 0x%x ori_error %d footpos_error 0x%03x",
-                r.mode, r.gait_id, r.order_process_bar, r.switch_status, switch_status_name(r.switch_status),
+  std::snprintf(text, sizeof text,
+                "mode %d gait %d bar %d switch %d (%s) contact 0x%x ori_error %d footpos_error 0x%03x", r.mode,
+                r.gait_id, r.order_process_bar, r.switch_status, switch_status_name(r.switch_status),
                 static_cast<unsigned>(r.contact) & 0xFFu, r.ori_error, static_cast<unsigned>(r.footpos_error) & 0xFFFu);
   std::string out = text;
   std::string motors;
@@ -95,8 +96,8 @@ void hold(HighLevelClient& client, const std::string& name, std::optional<double
   while (!stop.load() && (!hold_s || seconds_since(start) < *hold_s)) {
     std::this_thread::sleep_for(kSlice);
     const std::optional<robot_control_response_lcmt> now = client.latest_response();
-    if (now && shown && (now->mode != shown->mode || now->gait_id != shown->gait_id ||
-                         now->switch_status != shown->switch_status)) {
+    if (now && shown &&
+        (now->mode != shown->mode || now->gait_id != shown->gait_id || now->switch_status != shown->switch_status)) {
       std::printf("%s: now %s\n", name.c_str(), describe(*now).c_str());
       std::fflush(stdout);
     }

@@ -17,7 +17,7 @@ namespace cerebellum {
 namespace {
 
 constexpr int kDefaultWalkGait = 27;
-constexpr double kWalkStepHeightM = 0.05;  // what `walk` sends when --step-height is not given
+constexpr double kWalkStepHeightM = 0.05;    // what `walk` sends when --step-height is not given
 constexpr double kMaxDurationS = 2147483.0;  // int32 milliseconds
 
 const std::map<std::string, std::set<std::string>>& verb_options() {
@@ -203,18 +203,24 @@ std::string cmd_usage() {
          "  lie                    active lie-down to the lying pose (7, 1)\n"
          "  damp                   passive lie-down, joint damping (7, 0)\n"
          "  pose [--roll R] [--pitch P] [--yaw Y] [--height H] [--duration S]\n"
-         "                         QP stand (3, 0): roll in " + interval(pose.roll) + " rad and pitch in " +
-         interval(pose.pitch) + " rad absolute,\n"
-         "                         yaw in " + interval(pose.yaw) + " rad relative, height in " + interval(pose.height) +
-         " m (default " + format(pose.default_height_m) + ")\n"
+         "                         QP stand (3, 0): roll in " +
+         interval(pose.roll) + " rad and pitch in " + interval(pose.pitch) +
+         " rad absolute,\n"
+         "                         yaw in " +
+         interval(pose.yaw) + " rad relative, height in " + interval(pose.height) + " m (default " +
+         format(pose.default_height_m) +
+         ")\n"
          "  height H [--duration S]\n"
-         "                         body height H in " + interval(height.height) +
+         "                         body height H in " +
+         interval(height.height) +
          " m (pose control 21, 5) over S s (default 1)\n"
          "  walk [--vx V] [--vy V] [--yaw-rate W] [--gait N] [--step-height H] [--duration S]\n"
-         "                         locomotion (11, N), N in " + walking_gait_ids() + " (default " +
-         std::to_string(default_gait.id) + ", " + default_gait.name + ");\n"
+         "                         locomotion (11, N), N in " +
+         walking_gait_ids() + " (default " + std::to_string(default_gait.id) + ", " + default_gait.name +
+         ");\n"
          "                         velocities within the gait's limits (docs/highlevel.md); step height in\n"
-         "                         " + interval(kStepHeightRange) + " m (default " + format(kWalkStepHeightM) +
+         "                         " +
+         interval(kStepHeightRange) + " m (default " + format(kWalkStepHeightM) +
          "); S = 0 (default) walks until replaced\n"
          "  raw --mode M [--gait G] [--contact C] [--value V] [--duration S] [--vel x,y,yaw] [--rpy r,p,y]\n"
          "      [--pos x,y,z] [--acc a1,...,a6] [--ctrl-point x,y,z] [--foot-pose p1,...,p6] [--step-height f,r]\n"

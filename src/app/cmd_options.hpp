@@ -12,18 +12,18 @@ namespace cerebellum {
 
 struct CmdOptions {
   bool help = false;
-  std::string verb;                      // stand, lie, damp, pose, height, walk, raw
-  robot_control_cmd_lcmt command{};      // life_count is set by the client
-  double timeout_s = 10.0;               // for the mode to be reached
-  std::optional<double> hold_s;          // heartbeat after that; empty: until Ctrl-C
-  int ttl = 255;                         // of the LCM urls
+  std::string verb;                  // stand, lie, damp, pose, height, walk, raw
+  robot_control_cmd_lcmt command{};  // life_count is set by the client
+  double timeout_s = 10.0;           // for the mode to be reached
+  std::optional<double> hold_s;      // heartbeat after that; empty: until Ctrl-C
+  int ttl = 255;                     // of the LCM urls
 };
 
 struct StatusOptions {
   bool help = false;
   std::optional<long> count;  // lines to print; empty: until Ctrl-C
   double rate_hz = 5.0;
-  double timeout_s = 3.0;     // for the first response
+  double timeout_s = 3.0;  // for the first response
   int ttl = 255;
 };
 

@@ -39,7 +39,8 @@ void ConsoleReporter::print(const CycleRecord& record) {
                s.rpy.x(), s.rpy.y(), s.rpy.z(), record.safety.flags);
   static constexpr const char* kLegNames[kNumLegs] = {"FR", "FL", "RR", "RL"};
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    std::fprintf(out_, "    %s q=(%+.3f %+.3f %+.3f) rad  qd=(%+6.2f %+6.2f %+6.2f) rad/s  tau=(%+5.2f %+5.2f %+5.2f) Nm\n",
+    std::fprintf(out_,
+                 "    %s q=(%+.3f %+.3f %+.3f) rad  qd=(%+6.2f %+6.2f %+6.2f) rad/s  tau=(%+5.2f %+5.2f %+5.2f) Nm\n",
                  kLegNames[leg], s.q[3 * leg], s.q[3 * leg + 1], s.q[3 * leg + 2], s.qd[3 * leg], s.qd[3 * leg + 1],
                  s.qd[3 * leg + 2], s.tau[3 * leg], s.tau[3 * leg + 1], s.tau[3 * leg + 2]);
   }

@@ -8,8 +8,12 @@ namespace cerebellum {
 
 ControlLoop::ControlLoop(RobotBackend& backend, StateEstimator& estimator, MotionController& controller,
                          const GuardLimits& guard_limits, double period_s, double substep_s)
-    : backend_(backend), estimator_(estimator), controller_(controller), guard_limits_(guard_limits),
-      period_s_(period_s), substeps_(0) {
+    : backend_(backend),
+      estimator_(estimator),
+      controller_(controller),
+      guard_limits_(guard_limits),
+      period_s_(period_s),
+      substeps_(0) {
   if (!(period_s > 0.0)) throw std::invalid_argument("control period must be > 0 s");
   if (!(substep_s > 0.0) || substep_s > period_s) throw std::invalid_argument("substep must be in (0, period]");
   const double ratio = period_s / substep_s;

@@ -29,8 +29,7 @@ int parse_port(const std::string& text) {
 
 // walks the arguments: options with a value through on_option, the one positional through on_positional
 template <typename OnOption>
-void walk(const std::vector<std::string>& args, const std::string& usage, std::string& positional,
-          OnOption on_option) {
+void walk(const std::vector<std::string>& args, const std::string& usage, std::string& positional, OnOption on_option) {
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
     auto value = [&]() -> const std::string& {
@@ -66,7 +65,9 @@ std::string log_usage() {
   return "usage: cerebellum log [PREFIX] [--port P]... [--force]\n"
          "  records every channel of the interface with lcm-logger, one file per LCM port:\n"
          "  PREFIX.<port>.lcmlog, until Ctrl-C. PREFIX default: cerebellum-<date>-<time>\n"
-         "  --port P   only this port (repeatable): " + port_list() + "\n"
+         "  --port P   only this port (repeatable): " +
+         port_list() +
+         "\n"
          "  --force    overwrite existing files\n";
 }
 
@@ -76,7 +77,8 @@ std::string replay_usage() {
          "  and with the recorded timing\n"
          "  --speed X  playback speed (X > 0, default 1)\n"
          "  --ttl N    multicast ttl (0..255, default 0: this machine only)\n"
-         "  --port P   only this port (repeatable): " + port_list() + "\n";
+         "  --port P   only this port (repeatable): " +
+         port_list() + "\n";
 }
 
 LogOptions parse_log_options(const std::vector<std::string>& args) {

@@ -25,7 +25,7 @@ struct ReplayOptions {
   std::string prefix;      // or one file <prefix>.<port>.lcmlog
   std::vector<int> ports;  // default: every interface port with a file
   double speed = 1.0;
-  int ttl = 0;             // 0: this machine only
+  int ttl = 0;  // 0: this machine only
   bool help = false;
 };
 

@@ -53,10 +53,10 @@ std::vector<PortLog> find_port_logs(const std::string& prefix, const std::vector
     const std::size_t dot = stem.rfind('.');
     const std::string port_text = dot == std::string::npos ? "" : stem.substr(dot + 1);
     const auto& known = interface_ports();
-    const auto port = std::find_if(known.begin(), known.end(),
-                                   [&](int p) { return std::to_string(p) == port_text; });
+    const auto port = std::find_if(known.begin(), known.end(), [&](int p) { return std::to_string(p) == port_text; });
     if (port == known.end()) {
-      throw std::invalid_argument("cannot tell the port of " + prefix + ": name it <prefix>.<port>.lcmlog with a port of " +
+      throw std::invalid_argument("cannot tell the port of " + prefix +
+                                  ": name it <prefix>.<port>.lcmlog with a port of " +
                                   "the interface (7667, 7669, 7670, 7671)");
     }
     if (access(prefix.c_str(), R_OK) != 0) throw std::invalid_argument("no such log file: " + prefix);

@@ -32,6 +32,7 @@ int main(int argc, char** argv) {
   if (args[0] == "status") return cerebellum::run_status_command(rest);
   if (args[0] == "log") return cerebellum::run_log_command(rest);
   if (args[0] == "replay") return cerebellum::run_replay_command(rest);
-  std::fprintf(stderr, "cerebellum: unknown command '%s' (accepted: sim, cmd, status, log, replay)\n%s", args[0].c_str(), kUsage);
+  std::fprintf(stderr, "cerebellum: unknown command '%s' (accepted: sim, cmd, status, log, replay)\n%s",
+               args[0].c_str(), kUsage);
   return 2;
 }

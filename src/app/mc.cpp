@@ -6,7 +6,7 @@ namespace cerebellum {
 
 HighLevelCommand startup_command(Startup startup) {
   HighLevelCommand command;
-  command.mode = static_cast<int>(startup == Startup::Stand   ? ModeId::RecoveryStand
+  command.mode = static_cast<int>(startup == Startup::Stand ? ModeId::RecoveryStand
                                   : startup == Startup::Off ? ModeId::Off
                                                             : ModeId::PureDamper);
   return command;

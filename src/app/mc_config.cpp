@@ -39,8 +39,8 @@ class SectionReader {
     try {
       parsed = node_[key].as<double>();
     } catch (const YAML::Exception&) {
-      fail(qualified(key), "must be a number in [" + format(lower) + ", " + format(upper) + "], got '" +
-                               scalar(key) + "'");
+      fail(qualified(key),
+           "must be a number in [" + format(lower) + ", " + format(upper) + "], got '" + scalar(key) + "'");
     }
     if (!std::isfinite(parsed) || parsed < lower || parsed > upper) {
       fail(qualified(key), "must be in [" + format(lower) + ", " + format(upper) + "], got " + scalar(key));
@@ -128,8 +128,9 @@ void read_shm(const SectionReader& section, ShmLowLevelConfig& shm) {
   if (mode.empty()) return;
   const std::optional<unsigned> parsed = parse_shm_mode(mode);
   if (!parsed) {
-    section.fail("shm.mode", "must be octal permission bits (0600 .. 0777, with owner read and write, e.g. 0660), got '" +
-                                 mode + "'");
+    section.fail(
+        "shm.mode",
+        "must be octal permission bits (0600 .. 0777, with owner read and write, e.g. 0660), got '" + mode + "'");
   }
   shm.mode = *parsed;
 }
@@ -139,7 +140,8 @@ void read_motor_sdk(const SectionReader& section, const fs::path& base_dir, Moto
   const auto read_url = [&section](const std::string& key, std::string& url) {
     section.text(key, url);
     if (url.find("://") == std::string::npos) {
-      section.fail("motor_sdk." + key, "must be an LCM url such as udpm://239.255.76.67:7667?ttl=255, got '" + url + "'");
+      section.fail("motor_sdk." + key,
+                   "must be an LCM url such as udpm://239.255.76.67:7667?ttl=255, got '" + url + "'");
     }
   };
   read_url("control_url", motor_sdk.control_url);
@@ -148,7 +150,8 @@ void read_motor_sdk(const SectionReader& section, const fs::path& base_dir, Moto
   section.text("user_parameter_file", file);
   if (file.empty()) return;
   const fs::path file_path(file);
-  motor_sdk.user_parameter_file = (file_path.is_absolute() ? file_path : base_dir / file_path).lexically_normal().string();
+  motor_sdk.user_parameter_file =
+      (file_path.is_absolute() ? file_path : base_dir / file_path).lexically_normal().string();
   try {
     motor_sdk.parameters.position_mutation_limit =
         load_motor_sdk_user_parameters(motor_sdk.user_parameter_file).position_mutation_limit;
@@ -189,7 +192,8 @@ McConfig load_config(const std::string& path) {
   }
   McConfig config = default_config();
   if (root.IsNull()) return config;
-  const SectionReader top(root, path, "<top>", {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk", "highlevel"});
+  const SectionReader top(root, path, "<top>",
+                          {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk", "highlevel"});
   const fs::path base_dir = fs::absolute(path).parent_path();
 
   if (root["mc"]) {
@@ -217,9 +221,9 @@ McConfig load_config(const std::string& path) {
     s.number("kd", config.stand_up.kd, 0.0, 10.0);
   }
   if (root["safety"]) {
-    const SectionReader s(root["safety"], path, "safety",
-                          {"kp_max", "kd_max", "tau_ff_max_nm", "qd_des_max_rad_s", "joint_limit_margin_rad",
-                           "damping_kd"});
+    const SectionReader s(
+        root["safety"], path, "safety",
+        {"kp_max", "kd_max", "tau_ff_max_nm", "qd_des_max_rad_s", "joint_limit_margin_rad", "damping_kd"});
     s.number("kp_max", config.safety.command.kp_max, 0.0, robot::kCommandKpMax);
     s.number("kd_max", config.safety.command.kd_max, 0.0, robot::kCommandKdMax);
     s.number("tau_ff_max_nm", config.safety.command.tau_ff_max_nm, 0.0, robot::kTorqueMaxNm);

@@ -17,9 +17,9 @@ namespace cerebellum {
 
 // what the MC does by itself after start
 enum class Startup {
-  Stand,    // stand up and hold (the default demo)
-  Off,      // motors passive; low-level clients may take over
-  Damper,   // joint damping (PureDamper); low-level clients may take over
+  Stand,   // stand up and hold (the default demo)
+  Off,     // motors passive; low-level clients may take over
+  Damper,  // joint damping (PureDamper); low-level clients may take over
 };
 
 struct McConfig {

@@ -74,7 +74,7 @@ class VideoRecorder final : public CycleObserver {
   std::size_t head_ = 0;
   std::size_t count_ = 0;
   bool closing_ = false;
-  bool failed_ = false;          // ffmpeg stopped taking frames: drain without rendering
+  bool failed_ = false;             // ffmpeg stopped taking frames: drain without rendering
   std::uint64_t total_frames_ = 0;  // set when closing
   VideoResult result_;
   bool finished_ = false;

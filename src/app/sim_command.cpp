@@ -60,21 +60,20 @@ int run_sim_command(const std::vector<std::string>& args) {
     }
     SimTools tools(mc, options);
 
-    std::printf("cerebellum ready: simulated CyberDog2 (%s), %.0f Hz loop, speed %s\n",
-                config.robot.model_path.c_str(), 1.0 / config.loop_period_s,
-                options.speed > 0.0 ? std::to_string(options.speed).c_str() : "max");
+    std::printf("cerebellum ready: simulated CyberDog2 (%s), %.0f Hz loop, speed %s\n", config.robot.model_path.c_str(),
+                1.0 / config.loop_period_s, options.speed > 0.0 ? std::to_string(options.speed).c_str() : "max");
     std::fflush(stdout);
     const RunStats stats = tools.run({options.duration_s, options.speed}, stop_signal.flag());
     reporter.finish();
     const bool tools_ok = tools.finish(stdout, stderr);
     if (motor_sdk) motor_sdk->finish(stdout);
     if (highlevel) highlevel->finish(stdout);
-    std::printf("cerebellum stopped: %.2f s robot time in %.2f s wall time (%.1fx real time), %llu ticks, "
-                "%llu late substeps, trunk height %.3f m (simulator truth)\n",
-                stats.robot_time_s, stats.wall_time_s,
-                stats.wall_time_s > 0 ? stats.robot_time_s / stats.wall_time_s : 0.0,
-                static_cast<unsigned long long>(stats.ticks), static_cast<unsigned long long>(stats.late_substeps),
-                mc.simulation().ground_truth().position[2]);
+    std::printf(
+        "cerebellum stopped: %.2f s robot time in %.2f s wall time (%.1fx real time), %llu ticks, "
+        "%llu late substeps, trunk height %.3f m (simulator truth)\n",
+        stats.robot_time_s, stats.wall_time_s, stats.wall_time_s > 0 ? stats.robot_time_s / stats.wall_time_s : 0.0,
+        static_cast<unsigned long long>(stats.ticks), static_cast<unsigned long long>(stats.late_substeps),
+        mc.simulation().ground_truth().position[2]);
     if (!tools_ok) return 1;
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cerebellum sim: %s\n", e.what());

@@ -32,10 +32,12 @@ void parse_size(const std::string& text, int& width, int& height) {
 void check_tool_options(const SimOptions& options, const std::vector<std::string>& seen) {
   const auto given = [&](const char* name) { return std::find(seen.begin(), seen.end(), name) != seen.end(); };
   if (options.viewer && !options.record_path.empty()) {
-    throw std::invalid_argument("--viewer and --record cannot run together: record without the viewer "
-                                "(the recorder renders headlessly)");
+    throw std::invalid_argument(
+        "--viewer and --record cannot run together: record without the viewer "
+        "(the recorder renders headlessly)");
   }
-  if (given("--viewer-screenshot") && !options.viewer) throw std::invalid_argument("--viewer-screenshot needs --viewer");
+  if (given("--viewer-screenshot") && !options.viewer)
+    throw std::invalid_argument("--viewer-screenshot needs --viewer");
   for (const char* option : {"--record-fps", "--record-size"}) {
     if (given(option) && options.record_path.empty()) {
       throw std::invalid_argument(std::string(option) + " needs --record FILE.mp4");
@@ -124,7 +126,8 @@ SimOptions parse_sim_options(const std::vector<std::string>& args) {
     } else if (arg == "--telemetry-rate") {
       const std::string& text = value();
       options.telemetry_rate_hz = option_number(arg, text, "a rate in Hz > 0");
-      if (options.telemetry_rate_hz <= 0.0) throw std::invalid_argument("--telemetry-rate: must be > 0 Hz, got " + text);
+      if (options.telemetry_rate_hz <= 0.0)
+        throw std::invalid_argument("--telemetry-rate: must be > 0 Hz, got " + text);
     } else {
       throw std::invalid_argument("unknown option '" + arg + "'\n" + sim_usage());
     }

@@ -20,7 +20,7 @@ struct SimOptions {
   double record_fps = 30.0;
   int record_width = 640;
   int record_height = 480;
-  std::string telemetry_path;          // CSV
+  std::string telemetry_path;  // CSV
   double telemetry_rate_hz = 100.0;
 };
 

@@ -8,7 +8,8 @@
 namespace cerebellum {
 
 SnapshotCapture::SnapshotCapture(const Simulation& simulation, const HighLevelMachine& machine)
-    : simulation_(simulation), machine_(machine),
+    : simulation_(simulation),
+      machine_(machine),
       trunk_body_(std::max(0, mj_name2id(simulation.model(), mjOBJ_BODY, "trunk"))) {}
 
 SimSnapshot SnapshotCapture::sized_snapshot() const {
@@ -44,8 +45,8 @@ std::array<double, 3> planar_velocity_body(const std::array<double, 4>& quat,
                                            const std::array<double, 3>& velocity_world,
                                            const std::array<double, 3>& angular_velocity_body) {
   const Eigen::Quaterniond body_to_world(quat[0], quat[1], quat[2], quat[3]);
-  const Eigen::Vector3d v_body = body_to_world.normalized().conjugate() *
-                                 Eigen::Vector3d(velocity_world[0], velocity_world[1], velocity_world[2]);
+  const Eigen::Vector3d v_body =
+      body_to_world.normalized().conjugate() * Eigen::Vector3d(velocity_world[0], velocity_world[1], velocity_world[2]);
   return {v_body.x(), v_body.y(), angular_velocity_body[2]};
 }
 

@@ -24,10 +24,10 @@ void FakeBackend::advance(double period_s) {
   // semi-implicit Euler of q'' = tau for each joint
   const MotorLimits limits;
   for (std::size_t i = 0; i < kNumJoints; ++i) {
-    const double tau = limit_motor_torque(
-        motor_law_torque(command_.q_des[i], command_.qd_des[i], command_.kp[i], command_.kd[i],
-                         command_.tau_ff[i], frame_.q[i], frame_.qd[i]),
-        frame_.qd[i], limits);
+    const double tau =
+        limit_motor_torque(motor_law_torque(command_.q_des[i], command_.qd_des[i], command_.kp[i], command_.kd[i],
+                                            command_.tau_ff[i], frame_.q[i], frame_.qd[i]),
+                           frame_.qd[i], limits);
     frame_.tau[i] = tau;
     frame_.qd[i] += tau * period_s;
     frame_.q[i] += frame_.qd[i] * period_s;

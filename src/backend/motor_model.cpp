@@ -13,8 +13,8 @@ double limit_motor_torque(double tau_nm, double qd_rad_s, const MotorLimits& lim
   double available = limits.torque_max_nm;
   const double speed = std::abs(qd_rad_s);
   if (tau_nm * qd_rad_s > 0.0 && speed > limits.full_torque_speed_rad_s) {
-    const double fraction = (limits.no_load_speed_rad_s - speed) /
-                            (limits.no_load_speed_rad_s - limits.full_torque_speed_rad_s);
+    const double fraction =
+        (limits.no_load_speed_rad_s - speed) / (limits.no_load_speed_rad_s - limits.full_torque_speed_rad_s);
     available *= std::clamp(fraction, 0.0, 1.0);
   }
   return std::clamp(tau_nm, -available, available);

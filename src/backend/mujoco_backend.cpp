@@ -24,8 +24,7 @@ int sensor_address(const mjModel* model, const std::string& name, const std::str
 
 }  // namespace
 
-MujocoBackend::MujocoBackend(const MujocoBackendConfig& config)
-    : config_(config), rng_(config.noise.seed) {
+MujocoBackend::MujocoBackend(const MujocoBackendConfig& config) : config_(config), rng_(config.noise.seed) {
   if (!std::filesystem::is_regular_file(config.model_path)) {
     throw std::runtime_error("model file not found: " + config.model_path);
   }
@@ -77,9 +76,7 @@ SensorFrame MujocoBackend::read() {
   SensorFrame frame;
   frame.time_s = data_->time;
   const SensorNoise& noise = config_.noise;
-  auto noisy = [&](double value, double sigma) {
-    return noise.enabled ? value + sigma * unit_normal_(rng_) : value;
-  };
+  auto noisy = [&](double value, double sigma) { return noise.enabled ? value + sigma * unit_normal_(rng_) : value; };
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     frame.q[i] = noisy(data_->qpos[qpos_address_[i]], noise.joint_position_rad);
     frame.qd[i] = noisy(data_->qvel[dof_address_[i]], noise.joint_velocity_rad_s);
@@ -100,8 +97,8 @@ void MujocoBackend::apply_motor_drivers() {
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     const double q = data_->qpos[qpos_address_[i]];
     const double qd = data_->qvel[dof_address_[i]];
-    const double requested = motor_law_torque(command_.q_des[i], command_.qd_des[i], command_.kp[i],
-                                              command_.kd[i], command_.tau_ff[i], q, qd);
+    const double requested = motor_law_torque(command_.q_des[i], command_.qd_des[i], command_.kp[i], command_.kd[i],
+                                              command_.tau_ff[i], q, qd);
     const double torque = std::isfinite(requested) ? limit_motor_torque(requested, qd, config_.motor_limits) : 0.0;
     applied_torque_[i] = torque;
     data_->ctrl[actuator_id_[i]] = torque;

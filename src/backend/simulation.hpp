@@ -16,8 +16,8 @@ namespace cerebellum {
 
 // simulator truth, for tests and tools only: never handed to the controller
 struct GroundTruth {
-  std::array<double, 3> position{};         // world
-  std::array<double, 4> quat{1, 0, 0, 0};   // w, x, y, z, body to world
+  std::array<double, 3> position{};        // world
+  std::array<double, 4> quat{1, 0, 0, 0};  // w, x, y, z, body to world
   std::array<double, 3> velocity_world{};
   std::array<double, 3> angular_velocity_body{};
 };

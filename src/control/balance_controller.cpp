@@ -73,13 +73,13 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
   // desired wrench about the centre of mass
   const Eigen::Vector3d position_error = target.pose.position - estimated_pose_.position;
   const Eigen::Vector3d velocity_error = target.rate.position - estimated_velocity_;
-  Eigen::Vector3d acceleration = config_.kp_position.cwiseProduct(position_error) +
-                                 config_.kd_position.cwiseProduct(velocity_error);
+  Eigen::Vector3d acceleration =
+      config_.kp_position.cwiseProduct(position_error) + config_.kd_position.cwiseProduct(velocity_error);
   if (!target.hold_position_xy) {
     acceleration.head<2>() = -config_.kd_position.head<2>().cwiseProduct(estimated_velocity_.head<2>());
   }
-  acceleration.head<2>() = clamp_norm(Eigen::Vector3d(acceleration.x(), acceleration.y(), 0.0),
-                                      config_.max_position_acceleration).head<2>();
+  acceleration.head<2>() =
+      clamp_norm(Eigen::Vector3d(acceleration.x(), acceleration.y(), 0.0), config_.max_position_acceleration).head<2>();
   if (std::abs(position_error.z()) < config_.integrate_below_height_error_m) {
     height_integral_ = std::clamp(height_integral_ + dt_s * config_.ki_height * position_error.z(),
                                   -config_.max_integral_height_acceleration, config_.max_integral_height_acceleration);
@@ -94,10 +94,10 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
                           .cwiseMin(config_.max_integral_angular_acceleration);
   }
   const Eigen::Vector3d omega_des = angular_velocity_from_rpy_rate(target.pose.rpy, target.rate.rpy);
-  const Eigen::Vector3d angular_acceleration =
-      clamp_norm(config_.kp_orientation.cwiseProduct(angle_error) + config_.kd_orientation.cwiseProduct(omega_des - omega),
-                 config_.max_tilt_acceleration) +
-      angle_integral_;
+  const Eigen::Vector3d angular_acceleration = clamp_norm(config_.kp_orientation.cwiseProduct(angle_error) +
+                                                              config_.kd_orientation.cwiseProduct(omega_des - omega),
+                                                          config_.max_tilt_acceleration) +
+                                               angle_integral_;
   const Eigen::Matrix3d inertia = rotation * config_.inertia_diag.asDiagonal() * rotation.transpose();
   wrench_.head<3>() = config_.mass_kg * (acceleration + Eigen::Vector3d(0.0, 0.0, kGravityMPerS2));
   wrench_.tail<3>() = inertia * angular_acceleration;

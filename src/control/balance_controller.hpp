@@ -30,13 +30,13 @@ struct BalanceConfig {
   Eigen::Vector3d kp_orientation{200.0, 200.0, 150.0};
   Eigen::Vector3d kd_orientation{16.0, 16.0, 14.0};
   // integral action on height and orientation: removes the sag from leg weight and joint friction
-  double ki_height = 100.0;                   // 1/s^3
+  double ki_height = 100.0;                             // 1/s^3
   Eigen::Vector3d ki_orientation{100.0, 100.0, 100.0};  // 1/s^3
-  double max_integral_height_acceleration = 3.0;     // m/s^2
-  double max_integral_angular_acceleration = 10.0;   // rad/s^2
-  double integrate_below_height_error_m = 0.03;      // larger errors (a big move under way) are not integrated
+  double max_integral_height_acceleration = 3.0;        // m/s^2
+  double max_integral_angular_acceleration = 10.0;      // rad/s^2
+  double integrate_below_height_error_m = 0.03;         // larger errors (a big move under way) are not integrated
   double integrate_below_angle_error_rad = 0.1;
-  double max_tilt_acceleration = 30.0;  // rad/s^2 cap on the orientation PD
+  double max_tilt_acceleration = 30.0;     // rad/s^2 cap on the orientation PD
   double max_position_acceleration = 6.0;  // m/s^2 cap on the horizontal PD
   ForceDistributionConfig distribution;
   // loaded legs also get a joint PD to the pose the target asks for: the joints' dry friction
@@ -84,7 +84,7 @@ class BalanceController {
   BodyPose estimated_pose_;
   Eigen::Vector3d estimated_velocity_ = Eigen::Vector3d::Zero();
   Vector6d wrench_ = Vector6d::Zero();
-  double height_integral_ = 0.0;                           // m/s^2
+  double height_integral_ = 0.0;                              // m/s^2
   Eigen::Vector3d angle_integral_ = Eigen::Vector3d::Zero();  // rad/s^2
   // forces of the last successful solve: kept when a solve fails
   std::array<Eigen::Vector3d, kNumLegs> forces_{};

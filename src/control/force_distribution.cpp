@@ -28,10 +28,10 @@ ForceDistribution::ForceDistribution(const ForceDistributionConfig& config)
       const Eigen::Index r = 5 * j;
       const double mu = config_.friction_mu;
       problem.ineq_matrix.block<5, 3>(r, c) << 1.0, 0.0, -mu,  //  f_x - mu f_z <= 0
-          1.0, 0.0, mu,                                         //  f_x + mu f_z >= 0
-          0.0, 1.0, -mu,                                        //  f_y - mu f_z <= 0
-          0.0, 1.0, mu,                                         //  f_y + mu f_z >= 0
-          0.0, 0.0, 1.0;                                        //  0 <= f_z <= max
+          1.0, 0.0, mu,                                        //  f_x + mu f_z >= 0
+          0.0, 1.0, -mu,                                       //  f_y - mu f_z <= 0
+          0.0, 1.0, mu,                                        //  f_y + mu f_z >= 0
+          0.0, 0.0, 1.0;                                       //  0 <= f_z <= max
       problem.ineq_lower.segment<5>(r) << -kInf, 0.0, -kInf, 0.0, 0.0;
       problem.ineq_upper.segment<5>(r) << 0.0, kInf, 0.0, kInf, config_.force_z_max_n;
     }
@@ -59,8 +59,10 @@ qp::QpStatus ForceDistribution::solve(const std::array<Eigen::Vector3d, kNumLegs
   for (std::size_t j = 0; j < count; ++j) {
     const Eigen::Index c = static_cast<Eigen::Index>(3 * j);
     weighted_map_.block<3, 3>(0, c) = sqrt_weights.head<3>().asDiagonal() * Eigen::Matrix3d::Identity();
-    weighted_map_.block<3, 3>(3, c) = sqrt_weights.tail<3>().asDiagonal() * cross_matrix(feet_from_com[loaded_legs_[j]]);
-    problem.ineq_upper(static_cast<Eigen::Index>(5 * j + 4)) = std::min(force_z_max_n[loaded_legs_[j]], config_.force_z_max_n);
+    weighted_map_.block<3, 3>(3, c) =
+        sqrt_weights.tail<3>().asDiagonal() * cross_matrix(feet_from_com[loaded_legs_[j]]);
+    problem.ineq_upper(static_cast<Eigen::Index>(5 * j + 4)) =
+        std::min(force_z_max_n[loaded_legs_[j]], config_.force_z_max_n);
   }
   const auto map = weighted_map_.leftCols(n);
   // 0.5 f' H f + g' f with H = 2 (A' S A + alpha I), g = -2 A' S w
@@ -70,7 +72,8 @@ qp::QpStatus ForceDistribution::solve(const std::array<Eigen::Vector3d, kNumLegs
 
   const qp::QpStatus status = solver_.solve(problem, solution);
   if (status != qp::QpStatus::Solved) return status;
-  for (std::size_t j = 0; j < count; ++j) forces[loaded_legs_[j]] = solution.x.segment<3>(static_cast<Eigen::Index>(3 * j));
+  for (std::size_t j = 0; j < count; ++j)
+    forces[loaded_legs_[j]] = solution.x.segment<3>(static_cast<Eigen::Index>(3 * j));
   return status;
 }
 

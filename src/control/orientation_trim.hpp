@@ -8,8 +8,8 @@
 namespace cerebellum {
 
 struct OrientationTrimConfig {
-  double gain_per_s = 3.0;       // integral gain on the orientation error
-  double max_trim_rad = 0.1;     // per axis
+  double gain_per_s = 3.0;    // integral gain on the orientation error
+  double max_trim_rad = 0.1;  // per axis
 };
 
 class OrientationTrim {

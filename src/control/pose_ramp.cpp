@@ -36,7 +36,8 @@ void PoseRamp::advance(double dt_s) {
   value_.rpy = from_.rpy + (goal_.rpy - from_.rpy) * s;
   value_.position = from_.position + (goal_.position - from_.position) * s;
   // d/dt of 0.5 - 0.5 cos(pi t / T)
-  const double ds_dt = arrived() ? 0.0 : 0.5 * 3.14159265358979323846 * std::sin(3.14159265358979323846 * fraction()) / duration_s_;
+  const double ds_dt =
+      arrived() ? 0.0 : 0.5 * 3.14159265358979323846 * std::sin(3.14159265358979323846 * fraction()) / duration_s_;
   rate_.rpy = (goal_.rpy - from_.rpy) * ds_dt;
   rate_.position = (goal_.position - from_.position) * ds_dt;
 }

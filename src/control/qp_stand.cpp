@@ -17,7 +17,8 @@ void QpStand::start(const RobotState& state) {
   started_ = true;
   // the current pose in goal terms: offset from the centred stand, height
   const BodyPose& anchored = controller_.frame().anchored_pose();
-  const Eigen::Vector2d centred = controller_.body_xy_for_com(controller_.frame().centroid(kAllLegs).head<2>(), anchored.rpy);
+  const Eigen::Vector2d centred =
+      controller_.body_xy_for_com(controller_.frame().centroid(kAllLegs).head<2>(), anchored.rpy);
   BodyPose here = anchored;
   here.position.head<2>() -= centred;
   ramp_.hold(here);
@@ -45,10 +46,7 @@ void QpStand::set_goal(const QpStandGoal& goal, const PoseSpeed& speed, double m
   support_.request(goal_.lifted_leg);
 }
 
-
-double QpStand::progress() const {
-  return settled() ? 1.0 : std::min({ramp_.fraction(), support_.progress(), 0.99});
-}
+double QpStand::progress() const { return settled() ? 1.0 : std::min({ramp_.fraction(), support_.progress(), 0.99}); }
 
 void QpStand::compute(const RobotState& state, JointCommand& command) {
   const double dt = started_ ? std::max(state.time_s - last_time_s_, 0.0) : 0.0;
@@ -75,7 +73,8 @@ void QpStand::compute(const RobotState& state, JointCommand& command) {
     target.swing_foot[l] = frame.foothold(l) + support_.lift() * foot_offsets_[l];
   }
   target.pose.rpy = pose.rpy;
-  target.pose.position.head<2>() = controller_.body_xy_for_com(com_xy, pose.rpy) + offset_scale * pose.position.head<2>();
+  target.pose.position.head<2>() =
+      controller_.body_xy_for_com(com_xy, pose.rpy) + offset_scale * pose.position.head<2>();
   target.pose.position.z() = pose.position.z();
   target.rate = ramp_.rate();
   controller_.compute(state, target, dt, command);

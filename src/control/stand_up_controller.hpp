@@ -9,8 +9,8 @@
 namespace cerebellum {
 
 struct StandUpConfig {
-  double fold_duration_s = 1.0;   // current pose -> lying pose
-  double rise_duration_s = 1.5;   // lying pose -> stand pose
+  double fold_duration_s = 1.0;  // current pose -> lying pose
+  double rise_duration_s = 1.5;  // lying pose -> stand pose
   double kp = 60.0;
   double kd = 2.0;
   std::array<double, 3> lying_pose;  // abad, hip, knee (SDK convention)

@@ -12,9 +12,7 @@ struct GroundPlane {
   double centre_z = 0.0;                                // its height there (m)
   Eigen::Vector2d gradient = Eigen::Vector2d::Zero();   // dz/dx, dz/dy
 
-  double height_at(double x, double y) const {
-    return centre_z + gradient.dot(Eigen::Vector2d(x, y) - centre_xy);
-  }
+  double height_at(double x, double y) const { return centre_z + gradient.dot(Eigen::Vector2d(x, y) - centre_xy); }
   // ground pitch and roll seen along a heading (rad): nose-up on an uphill is negative pitch
   double pitch_along(double yaw) const {
     return -std::atan(gradient.dot(Eigen::Vector2d(std::cos(yaw), std::sin(yaw))));

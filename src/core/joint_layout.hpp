@@ -18,9 +18,7 @@ enum class Joint : std::size_t { Abad = 0, Hip = 1, Knee = 2 };
 template <typename T>
 using JointArray = std::array<T, kNumJoints>;
 
-constexpr std::size_t joint_index(std::size_t leg, std::size_t joint) {
-  return kJointsPerLeg * leg + joint;
-}
+constexpr std::size_t joint_index(std::size_t leg, std::size_t joint) { return kJointsPerLeg * leg + joint; }
 constexpr std::size_t joint_index(Leg leg, Joint joint) {
   return joint_index(static_cast<std::size_t>(leg), static_cast<std::size_t>(joint));
 }
@@ -44,6 +42,8 @@ constexpr JointArray<T> sdk_to_wire(const JointArray<T>& sdk) {
 }
 // the flip is its own inverse
 template <typename T>
-constexpr JointArray<T> wire_to_sdk(const JointArray<T>& wire) { return sdk_to_wire(wire); }
+constexpr JointArray<T> wire_to_sdk(const JointArray<T>& wire) {
+  return sdk_to_wire(wire);
+}
 
 }  // namespace cerebellum

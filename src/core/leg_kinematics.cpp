@@ -42,9 +42,7 @@ Vec3 foot_position_in_hip(std::size_t leg, const Vec3& q) {
   return {s.x, c0 * lateral - s0 * s.z, s0 * lateral + c0 * s.z};
 }
 
-Vec3 foot_position_in_body(std::size_t leg, const Vec3& q) {
-  return hip_position(leg) + foot_position_in_hip(leg, q);
-}
+Vec3 foot_position_in_body(std::size_t leg, const Vec3& q) { return hip_position(leg) + foot_position_in_hip(leg, q); }
 
 Mat3 foot_jacobian(std::size_t leg, const Vec3& q) {
   const double lateral = leg_side_sign(leg) * kAbadLength;
@@ -61,9 +59,8 @@ Mat3 foot_jacobian(std::size_t leg, const Vec3& q) {
   const double dz_dhip = kThighLength * s1 + kShankLength * s12;
   const double dz_dknee = kShankLength * s12;
   Mat3 j;
-  j << 0.0, dx_dhip, dx_dknee,
-      -s0 * lateral - c0 * s.z, -s0 * dz_dhip, -s0 * dz_dknee,
-      c0 * lateral - s0 * s.z, c0 * dz_dhip, c0 * dz_dknee;
+  j << 0.0, dx_dhip, dx_dknee, -s0 * lateral - c0 * s.z, -s0 * dz_dhip, -s0 * dz_dknee, c0 * lateral - s0 * s.z,
+      c0 * dz_dhip, c0 * dz_dknee;
   return j;
 }
 
@@ -88,8 +85,8 @@ LegIkResult inverse_kinematics_in_hip(std::size_t leg, const Vec3& p) {
 
   // knee from the distance hip-to-foot in the sagittal plane (law of cosines)
   const double reach_sq = p.x() * p.x() + z_sag * z_sag;
-  double cos_knee = (reach_sq - kThighLength * kThighLength - kShankLength * kShankLength) /
-                    (2.0 * kThighLength * kShankLength);
+  double cos_knee =
+      (reach_sq - kThighLength * kThighLength - kShankLength * kShankLength) / (2.0 * kThighLength * kShankLength);
   if (cos_knee > 1.0 || cos_knee < -1.0) {
     reachable = false;
     cos_knee = std::clamp(cos_knee, -1.0, 1.0);
@@ -98,8 +95,8 @@ LegIkResult inverse_kinematics_in_hip(std::size_t leg, const Vec3& p) {
 
   // hip: direction of the foot from the hip minus the knee's contribution
   const double foot_angle = std::atan2(-p.x(), -z_sag);
-  const double hip = foot_angle - std::atan2(kShankLength * std::sin(knee),
-                                             kThighLength + kShankLength * std::cos(knee));
+  const double hip =
+      foot_angle - std::atan2(kShankLength * std::sin(knee), kThighLength + kShankLength * std::cos(knee));
   // keep the abad angle in (-pi, pi]
   return {Vec3(std::remainder(abad, 2.0 * robot::kPi), hip, knee), reachable};
 }

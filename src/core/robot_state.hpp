@@ -22,7 +22,7 @@ struct RobotState {
   Eigen::Vector3d rpy = Eigen::Vector3d::Zero();                    // roll, pitch, yaw (ZYX)
   Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
   Eigen::Vector3d omega_world = Eigen::Vector3d::Zero();
-  Eigen::Vector3d accel_body = Eigen::Vector3d::Zero();   // specific force minus gravity
+  Eigen::Vector3d accel_body = Eigen::Vector3d::Zero();  // specific force minus gravity
   Eigen::Vector3d accel_world = Eigen::Vector3d::Zero();
   Eigen::Vector3d position_world = Eigen::Vector3d::Zero();
   Eigen::Vector3d velocity_world = Eigen::Vector3d::Zero();

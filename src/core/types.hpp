@@ -11,9 +11,9 @@ namespace cerebellum {
 // what the robot's sensors say at one instant (SDK joint convention)
 struct SensorFrame {
   double time_s = 0.0;
-  JointArray<double> q{};        // rad
-  JointArray<double> qd{};       // rad/s
-  JointArray<double> tau{};      // N m, torque the motor produced
+  JointArray<double> q{};    // rad
+  JointArray<double> qd{};   // rad/s
+  JointArray<double> tau{};  // N m, torque the motor produced
   JointArray<double> temperature_c{};
   std::array<double, 4> imu_quat{1.0, 0.0, 0.0, 0.0};  // w, x, y, z, body to world
   std::array<double, 3> imu_gyro{};                    // rad/s, body frame

@@ -93,9 +93,9 @@ void BodyStateEstimator::update(const SensorFrame& frame, const ContactPlan& pla
 void BodyStateEstimator::update_trust(const RobotState& state, double dt_s) {
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     time_in_contact_s_[leg] = state.contact[leg] > 0.5 ? time_in_contact_s_[leg] + dt_s : 0.0;
-    trust_[leg] = schedule_ ? scheduled_contact_trust((*schedule_)[leg], config_.schedule_ramp_fraction)
-                            : force_contact_trust(state.contact[leg], time_in_contact_s_[leg],
-                                                  config_.force_contact_ramp_s);
+    trust_[leg] = schedule_
+                      ? scheduled_contact_trust((*schedule_)[leg], config_.schedule_ramp_fraction)
+                      : force_contact_trust(state.contact[leg], time_in_contact_s_[leg], config_.force_contact_ramp_s);
   }
 }
 

@@ -106,9 +106,7 @@ void CommandQueue::clear() {
   ++generation_;
 }
 
-const HighLevelCommand* CommandQueue::current() const {
-  return entries_.empty() ? nullptr : &entries_.front().command;
-}
+const HighLevelCommand* CommandQueue::current() const { return entries_.empty() ? nullptr : &entries_.front().command; }
 
 void CommandQueue::start_front() { ++generation_; }
 

@@ -15,12 +15,12 @@ class CommandQueue {
   static constexpr std::size_t kCapacity = 64;
 
   enum class Receipt {
-    Heartbeat,   // same life_count: refreshes the timer only
-    RunsNow,     // duration 0: replaced the queue
-    Queued,      // duration > 0: appended
-    Ignored,     // mode -1
-    Rejected,    // NaN/Inf in a field: refreshes the timer, changes nothing else
-    QueueFull,   // more than kCapacity timed entries waiting
+    Heartbeat,  // same life_count: refreshes the timer only
+    RunsNow,    // duration 0: replaced the queue
+    Queued,     // duration > 0: appended
+    Ignored,    // mode -1
+    Rejected,   // NaN/Inf in a field: refreshes the timer, changes nothing else
+    QueueFull,  // more than kCapacity timed entries waiting
   };
 
   explicit CommandQueue(double tick_period_s);
@@ -53,9 +53,9 @@ class CommandQueue {
 
   double tick_period_s_;
   std::vector<Entry> entries_;
-  std::vector<Entry> before_last_receive_;     // entries_ as they were before the last receive()
+  std::vector<Entry> before_last_receive_;        // entries_ as they were before the last receive()
   std::uint64_t generation_of_last_receive_ = 0;  // generation_ right after it; 0: none since
-  HighLevelCommand last_finished_;             // the last timed entry that ran out
+  HighLevelCommand last_finished_;                // the last timed entry that ran out
   int last_life_count_ = -1;
   bool client_seen_ = false;
   double last_receive_s_ = 0.0;

@@ -35,8 +35,8 @@ struct PoseControlRanges {
   Range yaw{-0.45, 0.45};
   Range offset_x{-0.08, 0.08};
   Range offset_y{-0.06, 0.06};
-  Range height{0.15, 0.27};       // gait 5, and base height + z offset of gait 0
-  Range ctrl_point{-0.3, 0.3};    // each axis, body frame
+  Range height{0.15, 0.27};     // gait 5, and base height + z offset of gait 0
+  Range ctrl_point{-0.3, 0.3};  // each axis, body frame
   double default_height_m = kDefaultBodyHeightM;
 };
 

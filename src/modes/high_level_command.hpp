@@ -100,7 +100,7 @@ struct HighLevelStatus {
   int order_process_bar = 0;  // percent
   SwitchStatus switch_status = SwitchStatus::Done;
   int ori_error = 0;
-  int footpos_error = 0;      // bit 3 * leg + axis
+  int footpos_error = 0;  // bit 3 * leg + axis
   std::array<std::uint32_t, 12> motor_error{};
 };
 

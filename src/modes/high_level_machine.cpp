@@ -31,8 +31,8 @@ void HighLevelMachine::on_handover() { handed_over_ = true; }
 void HighLevelMachine::refuse(const HighLevelCommand& command, const char* reason) {
   banned_ = true;
   counters_.banned_transitions.fetch_add(1, std::memory_order_relaxed);
-  refusals_.try_push({command.mode, command.gait_id, current_ != nullptr ? static_cast<int>(current_->id()) : -1,
-                      reason});
+  refusals_.try_push(
+      {command.mode, command.gait_id, current_ != nullptr ? static_cast<int>(current_->id()) : -1, reason});
 }
 
 void HighLevelMachine::switch_to(Mode& mode, const RobotState& state, const HighLevelCommand& command) {

@@ -12,7 +12,7 @@ namespace cerebellum {
 struct LiftedConfig {
   double kp = 12.0;  // soft: a leg gives way when pushed
   double kd = 0.6;
-  double move_duration_s = 0.5;  // current joints -> stand pose
+  double move_duration_s = 0.5;     // current joints -> stand pose
   std::array<double, 3> hold_pose;  // abad, hip, knee (SDK convention)
 };
 LiftedConfig default_lifted_config();

@@ -4,8 +4,7 @@
 
 namespace cerebellum {
 
-LocomotionStandGait::LocomotionStandGait(const LocomotionStandConfig& config)
-    : config_(config), stand_(config.stand) {}
+LocomotionStandGait::LocomotionStandGait(const LocomotionStandConfig& config) : config_(config), stand_(config.stand) {}
 
 void LocomotionStandGait::start(const RobotState& state, const LocomotionCommand& command) {
   stand_.start(state);

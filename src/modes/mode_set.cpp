@@ -33,8 +33,8 @@ ModeSet::ModeSet(const ModeSetConfig& config)
       locomotion_(gaits_) {
   // the stepping gaits of the table run on the MPC locomotion controller; the stands on the
   // configured one
-  LocomotionGait& stand = config.locomotion_stand == LocomotionStand::Mpc ? static_cast<LocomotionGait&>(walking_)
-                                                                          : qp_stand_gait_;
+  LocomotionGait& stand =
+      config.locomotion_stand == LocomotionStand::Mpc ? static_cast<LocomotionGait&>(walking_) : qp_stand_gait_;
   for (const GaitSpec& gait : kGaitTable) gaits_.add(gait.id, gait_steps(gait) ? walking_ : stand);
 }
 

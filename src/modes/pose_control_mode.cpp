@@ -19,14 +19,16 @@ const char* PoseControlMode::check(const HighLevelCommand& command) const {
     case 0:
     case 3: break;
     case 2:
-      if (lifted_leg_from_contact(command.contact) < 0) return "mode 21 gait 2 needs one lifted leg in contact (e.g. 0b1110)";
+      if (lifted_leg_from_contact(command.contact) < 0)
+        return "mode 21 gait 2 needs one lifted leg in contact (e.g. 0b1110)";
       break;
     case 5:
       if (command.duration <= 0) return "mode 21 gait 5 needs duration > 0";
       break;
     default: return "mode 21 accepts gait 0 (pose), 2 (swing leg), 3 (hold) or 5 (height)";
   }
-  if (lifted_leg_from_contact(command.contact) == kInvalidContact) return "mode 21 lifts at most one leg (contact bits)";
+  if (lifted_leg_from_contact(command.contact) == kInvalidContact)
+    return "mode 21 lifts at most one leg (contact bits)";
   return nullptr;
 }
 
@@ -121,7 +123,8 @@ void PoseControlMode::run(const RobotState& state, JointCommand& command) {
   // joints: inverse kinematics of the feet seen from the commanded body pose
   // the legs are asked for the orientation that makes the IMU read the commanded one
   const Eigen::Matrix3d rotation_des = rotation_from_rpy(trim_.update(pose.rpy, frame_.body_rpy(state), dt));
-  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -robot::kGravityMPerS2);
+  const Eigen::Vector3d gravity_body =
+      state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -robot::kGravityMPerS2);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const std::size_t j = kJointsPerLeg * leg;
     const LegIkResult ik = inverse_kinematics_in_body(leg, rotation_des.transpose() * (feet[leg] - pose.position));

@@ -9,8 +9,7 @@ RecoveryStandMode::RecoveryStandMode(const StandUpConfig& config, const SelfRigh
 
 const char* RecoveryStandMode::check(const HighLevelCommand& command) const {
   const int gait = command.gait_id;
-  return gait == 0 || gait == kRollOverLeft || gait == kRollOverRight ? nullptr
-                                                                        : "mode 12 accepts gait 0, 17 or 18";
+  return gait == 0 || gait == kRollOverLeft || gait == kRollOverRight ? nullptr : "mode 12 accepts gait 0, 17 or 18";
 }
 
 void RecoveryStandMode::enter(const RobotState&, const HighLevelCommand& command) {

@@ -52,8 +52,8 @@ constexpr std::array<Row, kAllModes.size()> kTable{{
     {M::Jump3d, modes({M::RecoveryStand, M::Off, M::QpStand, M::PoseControl, M::Locomotion, M::PureDamper})},
     {M::PoseControl, modes({M::RecoveryStand, M::Off, M::PureDamper, M::PoseControl, M::QpStand, M::Locomotion,
                             M::Motion, M::Jump3d, M::TwoLegStand})},
-    {M::ForceJump, modes({M::PoseControl, M::PureDamper, M::QpStand, M::RecoveryStand, M::Off, M::Locomotion,
-                          M::TwoLegStand})},
+    {M::ForceJump,
+     modes({M::PoseControl, M::PureDamper, M::QpStand, M::RecoveryStand, M::Off, M::Locomotion, M::TwoLegStand})},
     {M::Motion, modes({M::RecoveryStand, M::Off, M::PureDamper, M::PoseControl, M::QpStand})},
     {M::TwoLegStand, modes({M::RecoveryStand, M::Off, M::PureDamper, M::Jump3d, M::QpStand, M::PoseControl})},
 }};

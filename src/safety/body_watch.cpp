@@ -20,9 +20,7 @@ bool orientation_error(const RobotState& state, double limit_rad) {
 }
 
 double FootWorkspace::default_forward_m() { return kLegM * std::sin(robot::deg(60.0)); }
-double FootWorkspace::default_lateral_m() {
-  return kLegM * std::sin(kAbadLimitRad) + kAbadM * std::cos(kAbadLimitRad);
-}
+double FootWorkspace::default_lateral_m() { return kLegM * std::sin(kAbadLimitRad) + kAbadM * std::cos(kAbadLimitRad); }
 double FootWorkspace::default_lowest_m() { return -std::sqrt(kLegM * kLegM + kAbadM * kAbadM); }
 double FootWorkspace::default_highest_m() { return -kLegM / 6.0; }
 

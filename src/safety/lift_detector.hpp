@@ -10,12 +10,12 @@
 namespace cerebellum {
 
 struct LiftDetectorConfig {
-  double unloaded_time_s = 0.1;          // all feet without load this long
-  double min_support_fraction = 0.5;     // vertical specific force above this fraction of g (not falling)
-  double min_rise_m = 0.03;              // body rose at least this much ...
-  double min_rise_speed_m_s = 0.2;       // ... or rises at least this fast
-  double integration_leak_s = 1.0;       // time constant that keeps the IMU integrals from drifting
-  int landed_feet = 3;                   // feet with load that count as set down
+  double unloaded_time_s = 0.1;       // all feet without load this long
+  double min_support_fraction = 0.5;  // vertical specific force above this fraction of g (not falling)
+  double min_rise_m = 0.03;           // body rose at least this much ...
+  double min_rise_speed_m_s = 0.2;    // ... or rises at least this fast
+  double integration_leak_s = 1.0;    // time constant that keeps the IMU integrals from drifting
+  int landed_feet = 3;                // feet with load that count as set down
   double landed_time_s = 0.1;
 };
 

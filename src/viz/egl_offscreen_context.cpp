@@ -32,14 +32,22 @@ EglOffscreenContext::EglOffscreenContext() {
   if (!eglInitialize(display, &major, &minor)) throw failure("eglInitialize");
   display_ = display;
 
-  const EGLint config_attributes[] = {EGL_RED_SIZE,        8,
-                                      EGL_GREEN_SIZE,      8,
-                                      EGL_BLUE_SIZE,       8,
-                                      EGL_ALPHA_SIZE,      8,
-                                      EGL_DEPTH_SIZE,      24,
-                                      EGL_STENCIL_SIZE,    8,
-                                      EGL_SURFACE_TYPE,    EGL_PBUFFER_BIT,
-                                      EGL_RENDERABLE_TYPE, EGL_OPENGL_BIT,
+  const EGLint config_attributes[] = {EGL_RED_SIZE,
+                                      8,
+                                      EGL_GREEN_SIZE,
+                                      8,
+                                      EGL_BLUE_SIZE,
+                                      8,
+                                      EGL_ALPHA_SIZE,
+                                      8,
+                                      EGL_DEPTH_SIZE,
+                                      24,
+                                      EGL_STENCIL_SIZE,
+                                      8,
+                                      EGL_SURFACE_TYPE,
+                                      EGL_PBUFFER_BIT,
+                                      EGL_RENDERABLE_TYPE,
+                                      EGL_OPENGL_BIT,
                                       EGL_NONE};
   EGLConfig config = nullptr;
   EGLint count = 0;

@@ -27,9 +27,9 @@ std::vector<std::string> ffmpeg_arguments(const std::string& path, int width, in
   char rate[32];
   std::snprintf(size, sizeof size, "%dx%d", width, height);
   std::snprintf(rate, sizeof rate, "%.6g", fps);
-  std::vector<std::string> args = {"ffmpeg", "-hide_banner", "-loglevel", "error", "-y",
-                                   "-f", "rawvideo", "-pix_fmt", "rgb24", "-video_size", size,
-                                   "-framerate", rate, "-i", "pipe:0", "-vf", "vflip"};
+  std::vector<std::string> args = {"ffmpeg",   "-hide_banner", "-loglevel", "error",       "-y",   "-f",
+                                   "rawvideo", "-pix_fmt",     "rgb24",     "-video_size", size,   "-framerate",
+                                   rate,       "-i",           "pipe:0",    "-vf",         "vflip"};
   if (ends_with(path, ".png")) {
     args.insert(args.end(), {"-frames:v", "1", "-update", "1"});
   } else {

@@ -38,9 +38,8 @@ OverlayText status_overlay(const SimSnapshot& snapshot, const std::string& run_s
   const auto& cmd = snapshot.commanded_velocity;
   OverlayText text;
   text.titles = "time\nmode\ngait\nswitch\nvx vy wz commanded\nvx vy wz estimated\nvx vy wz truth\nheight est / truth";
-  text.values = format("%.2f s", snapshot.time_s, 0, 0) + "\n" +
-                std::to_string(snapshot.status.mode) + " " + mode_name(snapshot.status.mode) + "\n" +
-                std::to_string(snapshot.status.gait_id) + "\n" +
+  text.values = format("%.2f s", snapshot.time_s, 0, 0) + "\n" + std::to_string(snapshot.status.mode) + " " +
+                mode_name(snapshot.status.mode) + "\n" + std::to_string(snapshot.status.gait_id) + "\n" +
                 switch_status_name(snapshot.status.switch_status) + "\n" +
                 format("%+.2f %+.2f m/s %+.2f rad/s", cmd[0], cmd[1], cmd[2]) + "\n" +
                 format("%+.2f %+.2f m/s %+.2f rad/s", est[0], est[1], est[2]) + "\n" +

@@ -13,8 +13,8 @@ namespace cerebellum {
 struct SimSnapshot {
   std::uint64_t tick = 0;
   double time_s = 0.0;
-  std::vector<double> qpos;  // sized to the model's nq once, then copied into
-  std::vector<double> qvel;  // sized to the model's nv
+  std::vector<double> qpos;                  // sized to the model's nq once, then copied into
+  std::vector<double> qvel;                  // sized to the model's nv
   std::array<double, 3> external_force_n{};  // the push on the trunk (world frame)
   HighLevelStatus status;
   std::array<double, 3> commanded_velocity{};  // vx, vy (m/s), yaw rate (rad/s) asked of mode 11

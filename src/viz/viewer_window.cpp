@@ -10,8 +10,7 @@
 namespace cerebellum {
 namespace {
 
-constexpr const char* kHelp =
-    "space  pause\nS  slow motion\nF  follow\nctrl+right drag  push\nEsc  quit";
+constexpr const char* kHelp = "space  pause\nS  slow motion\nF  follow\nctrl+right drag  push\nEsc  quit";
 
 std::string glfw_error() {
   const char* description = nullptr;
@@ -108,14 +107,9 @@ void ViewerWindow::on_key(GLFWwindow* window, int key, int, int action, int) {
       self.controls_.slow_motion = !self.controls_.slow_motion;
       self.pace_changed_ = true;
       break;
-    case GLFW_KEY_F:
-      self.renderer_->set_follow(!self.renderer_->following());
-      break;
-    case GLFW_KEY_ESCAPE:
-      self.controls_.quit = true;
-      break;
-    default:
-      break;
+    case GLFW_KEY_F: self.renderer_->set_follow(!self.renderer_->following()); break;
+    case GLFW_KEY_ESCAPE: self.controls_.quit = true; break;
+    default: break;
   }
 }
 
@@ -145,16 +139,16 @@ void ViewerWindow::on_cursor(GLFWwindow* window, double x, double y) {
   const bool right = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_RIGHT) == GLFW_PRESS;
   const bool middle = glfwGetMouseButton(window, GLFW_MOUSE_BUTTON_MIDDLE) == GLFW_PRESS;
   if (!left && !right && !middle) return;
-  const bool shift = glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS ||
-                     glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
+  const bool shift =
+      glfwGetKey(window, GLFW_KEY_LEFT_SHIFT) == GLFW_PRESS || glfwGetKey(window, GLFW_KEY_RIGHT_SHIFT) == GLFW_PRESS;
   int height = 1;
   int width = 1;
   glfwGetWindowSize(window, &width, &height);
   const double rel_dx = dx / height;
   const double rel_dy = dy / height;
   if (self.perturbation_.active) {
-    mjv_movePerturb(self.renderer_->model(), self.renderer_->data(), shift ? mjMOUSE_MOVE_V : mjMOUSE_MOVE_H,
-                    rel_dx, rel_dy, &self.renderer_->scene(), &self.perturbation_);
+    mjv_movePerturb(self.renderer_->model(), self.renderer_->data(), shift ? mjMOUSE_MOVE_V : mjMOUSE_MOVE_H, rel_dx,
+                    rel_dy, &self.renderer_->scene(), &self.perturbation_);
     return;
   }
   int action = mjMOUSE_ZOOM;

@@ -74,9 +74,7 @@ TEST(McConfig, BrokenYamlAndMissingFileAreReported) {
   EXPECT_NE(load_error("- a\n- b\n").find("<top> must be a mapping"), std::string::npos);
 }
 
-TEST(McConfig, EmptyFileGivesDefaults) {
-  EXPECT_EQ(load_error(""), "");
-}
+TEST(McConfig, EmptyFileGivesDefaults) { EXPECT_EQ(load_error(""), ""); }
 
 TEST(McConfig, ShippedConfigLoads) {
   const McConfig config = load_config(std::string(CEREBELLUM_SOURCE_DIR) + "/config/cerebellum.yaml");

@@ -15,8 +15,8 @@ std::string parse_error(const std::vector<std::string>& args) {
 }
 
 TEST(SimOptions, ParsesEveryOption) {
-  const SimOptions options = parse_sim_options({"--speed", "2.5", "--duration", "10", "--config", "a.yaml",
-                                                "--seed", "7"});
+  const SimOptions options =
+      parse_sim_options({"--speed", "2.5", "--duration", "10", "--config", "a.yaml", "--seed", "7"});
   EXPECT_DOUBLE_EQ(options.speed, 2.5);
   EXPECT_DOUBLE_EQ(options.duration_s, 10.0);
   EXPECT_EQ(options.config_path, "a.yaml");

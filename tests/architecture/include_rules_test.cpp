@@ -14,7 +14,7 @@ namespace {
 namespace fs = std::filesystem;
 
 struct Include {
-  std::string file;    // relative to src/
+  std::string file;  // relative to src/
   int line = 0;
   std::string target;  // as written between the quotes
 };

@@ -41,8 +41,8 @@ TEST(SimulationPush, PullsTheTrunkWithTheSpringOnTheStateOfTheStep) {
   const PushSpring spring;
   std::array<double, 3> expected{};
   for (int k = 0; k < 3; ++k) {
-    expected[k] = spring.stiffness_n_per_m * (request.target_world[k] - com[k]) -
-                  spring.damping_n_s_per_m * velocity[k];
+    expected[k] =
+        spring.stiffness_n_per_m * (request.target_world[k] - com[k]) - spring.damping_n_s_per_m * velocity[k];
   }
   ASSERT_LT(std::hypot(expected[0], expected[1], expected[2]), spring.max_force_n);
   const std::array<double, 3> force = trunk_force(simulation);

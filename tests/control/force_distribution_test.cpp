@@ -86,12 +86,14 @@ TEST(ForceDistribution, FeasibleRandomWrenchesAreReproducedAndSatisfyKkt) {
     EXPECT_LT((wrench_of(feet, forces) - demanded).norm(), 0.05) << trial;
     expect_within_friction_and_bounds(forces, limits);
     // optimality from the problem alone, and the same minimizer from another solver
-    const qp::fixtures::KktResiduals kkt = qp::fixtures::kkt_residuals(distribution.last_problem(), distribution.last_solution());
+    const qp::fixtures::KktResiduals kkt =
+        qp::fixtures::kkt_residuals(distribution.last_problem(), distribution.last_solution());
     EXPECT_LT(kkt.worst(), 1e-6) << trial;
     ASSERT_EQ(reference.solve(distribution.last_problem(), reference_solution), qp::QpStatus::Solved);
     // the regularised problem is strictly convex: one minimizer (the null-space directions of the
     // wrench map are weakly curved, so forces agree to 0.01 N and the objective much closer)
-    const double own_objective = qp::fixtures::objective_of(distribution.last_problem(), distribution.last_solution().x);
+    const double own_objective =
+        qp::fixtures::objective_of(distribution.last_problem(), distribution.last_solution().x);
     const double reference_objective = qp::fixtures::objective_of(distribution.last_problem(), reference_solution.x);
     EXPECT_LE(own_objective, reference_objective + 1e-9 * std::abs(reference_objective)) << trial;
     EXPECT_LT((reference_solution.x - distribution.last_solution().x).cwiseAbs().maxCoeff(), 1e-2) << trial;
@@ -136,7 +138,8 @@ TEST(ForceDistribution, NoLoadedFootIsReportedInfeasible) {
   ForceDistribution distribution;
   Forces forces{};
   forces[1] = Eigen::Vector3d::Ones();
-  EXPECT_EQ(distribution.solve(standing_feet(), Limits{0, 0, 0, 0}, gravity_wrench(8.5), forces), qp::QpStatus::Infeasible);
+  EXPECT_EQ(distribution.solve(standing_feet(), Limits{0, 0, 0, 0}, gravity_wrench(8.5), forces),
+            qp::QpStatus::Infeasible);
   for (const Eigen::Vector3d& f : forces) EXPECT_TRUE(f.isZero());
 }
 

@@ -91,7 +91,8 @@ TEST(PoseReach, CutsAPoseBackToTheLastOneTheLegsCanHold) {
   // footholds (stance frame: ground at z = 0) straight under the hips
   Footholds footholds{};
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    footholds[leg] = hip_position(leg) + Eigen::Vector3d(0.0, leg_side_sign(leg) * robot::kAbadLength, robot::kFootRadius);
+    footholds[leg] =
+        hip_position(leg) + Eigen::Vector3d(0.0, leg_side_sign(leg) * robot::kAbadLength, robot::kFootRadius);
   }
   BodyPose level;
   level.position = {0.0, 0.0, 0.235};
@@ -140,8 +141,8 @@ TEST(StanceFrame, RecoversTheBodyPoseFromFootholdsAndJointAngles) {
   state.orientation = Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ());
   state.contact = {1, 1, 1, 1};
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    const Eigen::Vector3d foot = hip_position(leg) + Eigen::Vector3d(0.0, leg_side_sign(leg) * robot::kAbadLength,
-                                                                     -(0.24 - robot::kFootRadius));
+    const Eigen::Vector3d foot =
+        hip_position(leg) + Eigen::Vector3d(0.0, leg_side_sign(leg) * robot::kAbadLength, -(0.24 - robot::kFootRadius));
     const LegIkResult ik = inverse_kinematics_in_body(leg, foot);
     for (std::size_t k = 0; k < kJointsPerLeg; ++k) state.q[3 * leg + k] = ik.q[static_cast<Eigen::Index>(k)];
     state.foot_position_body[leg] = foot_position_in_body(leg, ik.q);
@@ -155,7 +156,8 @@ TEST(StanceFrame, RecoversTheBodyPoseFromFootholdsAndJointAngles) {
   const Eigen::Matrix3d roll = rotation_from_rpy(Eigen::Vector3d(0.1, 0.0, 0.0));
   const Eigen::Vector3d origin = frame.anchored_pose().position;
   state.rpy.x() = 0.1;
-  state.orientation = Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX());
+  state.orientation =
+      Eigen::AngleAxisd(1.0, Eigen::Vector3d::UnitZ()) * Eigen::AngleAxisd(0.1, Eigen::Vector3d::UnitX());
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const LegIkResult ik = inverse_kinematics_in_body(leg, roll.transpose() * (frame.foothold(leg) - origin));
     for (std::size_t k = 0; k < kJointsPerLeg; ++k) state.q[3 * leg + k] = ik.q[static_cast<Eigen::Index>(k)];

@@ -58,8 +58,10 @@ class TruthComparison final : public CycleObserver {
 // the robot dropped from 0.3 m stands up and holds the stand pose, estimated by the filter
 struct EstimatedStand {
   explicit EstimatedStand(bool noise)
-      : backend(sim_config(noise)), stand_up(default_stand_up_config()),
-        loop(backend, estimator, stand_up, GuardLimits{}, 0.002), truth(backend) {
+      : backend(sim_config(noise)),
+        stand_up(default_stand_up_config()),
+        loop(backend, estimator, stand_up, GuardLimits{}, 0.002),
+        truth(backend) {
     loop.add_observer(truth);
   }
 

@@ -42,7 +42,8 @@ TEST(GroundPlaneFit, MatchesFullLeastSquaresOnNoisyPoints) {
     ASSERT_TRUE(fit_ground_plane(points, plane));
     EXPECT_NEAR(plane.gradient.x(), abc(1), 1e-9);
     EXPECT_NEAR(plane.gradient.y(), abc(2), 1e-9);
-    for (const auto& p : points) EXPECT_NEAR(plane.height_at(p.x(), p.y()), abc(0) + abc(1) * p.x() + abc(2) * p.y(), 1e-9);
+    for (const auto& p : points)
+      EXPECT_NEAR(plane.height_at(p.x(), p.y()), abc(0) + abc(1) * p.x() + abc(2) * p.y(), 1e-9);
   }
 }
 

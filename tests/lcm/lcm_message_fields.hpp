@@ -30,13 +30,12 @@ void for_each_member(F&& f) {
 
 // fill: floats in [-100, 100), integers over their full range, printable text
 template <class T>
-  requires std::is_arithmetic_v<T>
+requires std::is_arithmetic_v<T>
 void fill_value(T& value, std::mt19937& rng) {
   if constexpr (std::is_floating_point_v<T>) {
     value = std::uniform_real_distribution<T>(-100, 100)(rng);
   } else {
-    std::uniform_int_distribution<std::int64_t> dist(std::numeric_limits<T>::min(),
-                                                     std::numeric_limits<T>::max());
+    std::uniform_int_distribution<std::int64_t> dist(std::numeric_limits<T>::min(), std::numeric_limits<T>::max());
     value = static_cast<T>(dist(rng));
   }
 }
@@ -77,8 +76,7 @@ template <class Msg>
 void expect_same_fields(const Msg& expected, const Msg& actual) {
   std::size_t index = 0;
   for_each_member<Msg>([&](auto member) {
-    EXPECT_TRUE(same_value(expected.*member, actual.*member))
-        << Msg::getTypeName() << " field #" << index;
+    EXPECT_TRUE(same_value(expected.*member, actual.*member)) << Msg::getTypeName() << " field #" << index;
     ++index;
   });
 }
@@ -115,7 +113,7 @@ inline std::string hex_from_bytes(const Bytes& bytes) {
 class BigEndianWriter {
  public:
   template <class T>
-    requires std::is_arithmetic_v<T>
+  requires std::is_arithmetic_v<T>
   void put(T value) {
     auto raw = std::bit_cast<std::array<std::uint8_t, sizeof(T)>>(value);
     if constexpr (std::endian::native == std::endian::little) std::reverse(raw.begin(), raw.end());

@@ -23,9 +23,8 @@ struct ProcessResult {
 
 // runs the helper script with the generated modules on PYTHONPATH; stdout captured
 ProcessResult run_interop_script(const std::string& arguments) {
-  const std::string command = std::string("PYTHONPATH='") + CEREBELLUM_LCM_PYTHON_DIR + "' '" +
-                              CEREBELLUM_PYTHON3 + "' '" + CEREBELLUM_LCM_INTEROP_SCRIPT + "' " +
-                              arguments;
+  const std::string command = std::string("PYTHONPATH='") + CEREBELLUM_LCM_PYTHON_DIR + "' '" + CEREBELLUM_PYTHON3 +
+                              "' '" + CEREBELLUM_LCM_INTEROP_SCRIPT + "' " + arguments;
   ProcessResult result;
   FILE* pipe = popen(command.c_str(), "r");
   if (pipe == nullptr) return result;
@@ -108,8 +107,8 @@ robot_control_response_lcmt known_response() {
 }
 
 TEST(LcmPythonInterop, ResponseFromCppDecodesInPython) {
-  const ProcessResult result = run_interop_script("check robot_control_response " +
-                                                  hex_from_bytes(encode_message(known_response())));
+  const ProcessResult result =
+      run_interop_script("check robot_control_response " + hex_from_bytes(encode_message(known_response())));
   EXPECT_EQ(result.exit_code, 0) << result.output;
 }
 
@@ -123,8 +122,8 @@ TEST(LcmPythonInterop, PythonNoticesAChangedResponse) {
 }
 
 TEST(LcmPythonInterop, PythonRefusesAnotherTypesMessage) {
-  const ProcessResult result = run_interop_script(
-      "check robot_control_response " + hex_from_bytes(encode_message(motor_ctrl_lcmt{})));
+  const ProcessResult result =
+      run_interop_script("check robot_control_response " + hex_from_bytes(encode_message(motor_ctrl_lcmt{})));
   EXPECT_EQ(result.exit_code, 1) << result.output;
 }
 

@@ -18,8 +18,7 @@ TYPED_TEST(LcmRoundTrip, DecodeRestoresEveryField) {
     const TypeParam sent = random_message<TypeParam>(seed);
     const Bytes encoded = encode_message(sent);
     TypeParam received{};
-    EXPECT_EQ(received.decode(encoded.data(), 0, static_cast<int>(encoded.size())),
-              static_cast<int>(encoded.size()));
+    EXPECT_EQ(received.decode(encoded.data(), 0, static_cast<int>(encoded.size())), static_cast<int>(encoded.size()));
     expect_same_fields(sent, received);
   }
 }
@@ -30,8 +29,7 @@ TYPED_TEST(LcmRoundTrip, DecodeAtAnOffsetReadsFromThere) {
   Bytes padded(5, 0xAB);
   padded.insert(padded.end(), encoded.begin(), encoded.end());
   TypeParam received{};
-  EXPECT_EQ(received.decode(padded.data(), 5, static_cast<int>(encoded.size())),
-            static_cast<int>(encoded.size()));
+  EXPECT_EQ(received.decode(padded.data(), 5, static_cast<int>(encoded.size())), static_cast<int>(encoded.size()));
   expect_same_fields(sent, received);
 }
 
@@ -50,8 +48,7 @@ TYPED_TEST(LcmRoundTrip, AnyChangedFingerprintByteIsRefused) {
     Bytes corrupted = encoded;
     corrupted[i] ^= static_cast<std::uint8_t>(1u << (i % 8));
     TypeParam received{};
-    EXPECT_LT(received.decode(corrupted.data(), 0, static_cast<int>(corrupted.size())), 0)
-        << "byte " << i;
+    EXPECT_LT(received.decode(corrupted.data(), 0, static_cast<int>(corrupted.size())), 0) << "byte " << i;
   }
 }
 

@@ -32,9 +32,8 @@ struct LcmReference<robot_control_cmd_lcmt> {
   static constexpr const char* fingerprint_hex = "8ed6c3c52d5f2dea";
   static constexpr std::size_t encoded_size = 124;
   static constexpr auto fields =
-      std::make_tuple(&M::mode, &M::gait_id, &M::contact, &M::life_count, &M::vel_des, &M::rpy_des,
-                      &M::pos_des, &M::acc_des, &M::ctrl_point, &M::foot_pose, &M::step_height,
-                      &M::value, &M::duration);
+      std::make_tuple(&M::mode, &M::gait_id, &M::contact, &M::life_count, &M::vel_des, &M::rpy_des, &M::pos_des,
+                      &M::acc_des, &M::ctrl_point, &M::foot_pose, &M::step_height, &M::value, &M::duration);
 };
 
 template <>
@@ -42,9 +41,8 @@ struct LcmReference<robot_control_response_lcmt> {
   using M = robot_control_response_lcmt;
   static constexpr const char* fingerprint_hex = "90bb53042ddb518e";
   static constexpr std::size_t encoded_size = 64;
-  static constexpr auto fields =
-      std::make_tuple(&M::mode, &M::gait_id, &M::contact, &M::order_process_bar, &M::switch_status,
-                      &M::ori_error, &M::footpos_error, &M::motor_error);
+  static constexpr auto fields = std::make_tuple(&M::mode, &M::gait_id, &M::contact, &M::order_process_bar,
+                                                 &M::switch_status, &M::ori_error, &M::footpos_error, &M::motor_error);
 };
 
 // variable size: 8 fingerprint + 4 length + text + 1 terminating nul
@@ -69,8 +67,7 @@ struct LcmReference<localization_lcmt> {
   using M = localization_lcmt;
   static constexpr const char* fingerprint_hex = "fc48de06e344fb12";
   static constexpr std::size_t encoded_size = 76;
-  static constexpr auto fields =
-      std::make_tuple(&M::xyz, &M::vxyz, &M::rpy, &M::omegaBody, &M::vBody, &M::timestamp);
+  static constexpr auto fields = std::make_tuple(&M::xyz, &M::vxyz, &M::rpy, &M::omegaBody, &M::vBody, &M::timestamp);
 };
 
 template <>
@@ -86,10 +83,9 @@ struct LcmReference<state_estimator_lcmt> {
   using M = state_estimator_lcmt;
   static constexpr const char* fingerprint_hex = "18d2c31121532f5e";
   static constexpr std::size_t encoded_size = 192;
-  static constexpr auto fields = std::make_tuple(
-      &M::p, &M::vWorld, &M::vBody, &M::p_abs, &M::vWorld_abs, &M::vBody_abs, &M::vRemoter,
-      &M::rpy, &M::omegaBody, &M::omegaWorld, &M::quat, &M::aBody, &M::aWorld,
-      &M::contactEstimate, &M::timestamp);
+  static constexpr auto fields = std::make_tuple(&M::p, &M::vWorld, &M::vBody, &M::p_abs, &M::vWorld_abs, &M::vBody_abs,
+                                                 &M::vRemoter, &M::rpy, &M::omegaBody, &M::omegaWorld, &M::quat,
+                                                 &M::aBody, &M::aWorld, &M::contactEstimate, &M::timestamp);
 };
 
 template <>
@@ -98,8 +94,8 @@ struct LcmReference<leg_control_data_lcmt> {
   static constexpr const char* fingerprint_hex = "4d630488c94854d7";
   static constexpr std::size_t encoded_size = 392;
   static constexpr auto fields =
-      std::make_tuple(&M::q, &M::qd, &M::p, &M::v, &M::tau_est, &M::force_est, &M::force_desired,
-                      &M::q_abad_limit, &M::q_hip_limit, &M::q_knee_limit);
+      std::make_tuple(&M::q, &M::qd, &M::p, &M::v, &M::tau_est, &M::force_est, &M::force_desired, &M::q_abad_limit,
+                      &M::q_hip_limit, &M::q_knee_limit);
 };
 
 template <>
@@ -107,8 +103,7 @@ struct LcmReference<motor_ctrl_lcmt> {
   using M = motor_ctrl_lcmt;
   static constexpr const char* fingerprint_hex = "7bb7cc457845acac";
   static constexpr std::size_t encoded_size = 248;
-  static constexpr auto fields =
-      std::make_tuple(&M::q_des, &M::qd_des, &M::kp_des, &M::kd_des, &M::tau_des);
+  static constexpr auto fields = std::make_tuple(&M::q_des, &M::qd_des, &M::kp_des, &M::kd_des, &M::tau_des);
 };
 
 template <>
@@ -125,9 +120,8 @@ struct LcmReference<spi_data_t> {
   static constexpr const char* fingerprint_hex = "9b4a1512c17ce8c6";
   static constexpr std::size_t encoded_size = 268;
   static constexpr auto fields = std::make_tuple(
-      &M::q_abad, &M::q_hip, &M::q_knee, &M::qd_abad, &M::qd_hip, &M::qd_knee, &M::flags,
-      &M::spi_driver_status, &M::tau_abad, &M::tau_hip, &M::tau_knee, &M::tmp_abad, &M::tmp_hip,
-      &M::tmp_knee, &M::reserve);
+      &M::q_abad, &M::q_hip, &M::q_knee, &M::qd_abad, &M::qd_hip, &M::qd_knee, &M::flags, &M::spi_driver_status,
+      &M::tau_abad, &M::tau_hip, &M::tau_knee, &M::tmp_abad, &M::tmp_hip, &M::tmp_knee, &M::reserve);
 };
 
 // the table's size for this message (fixed, or from the string length)
@@ -142,10 +136,9 @@ std::size_t reference_encoded_size(const Msg& msg) {
 }
 
 // every type, for typed tests; named by its lcm type name
-using AllLcmTypes =
-    ::testing::Types<robot_control_cmd_lcmt, robot_control_response_lcmt, file_send_lcmt,
-                     file_recv_lcmt, localization_lcmt, danger_states_lcmt, state_estimator_lcmt,
-                     leg_control_data_lcmt, motor_ctrl_lcmt, motor_ctrl_state_lcmt, spi_data_t>;
+using AllLcmTypes = ::testing::Types<robot_control_cmd_lcmt, robot_control_response_lcmt, file_send_lcmt,
+                                     file_recv_lcmt, localization_lcmt, danger_states_lcmt, state_estimator_lcmt,
+                                     leg_control_data_lcmt, motor_ctrl_lcmt, motor_ctrl_state_lcmt, spi_data_t>;
 
 struct LcmTypeName {
   template <class Msg>

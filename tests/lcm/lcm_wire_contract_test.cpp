@@ -18,8 +18,7 @@ TYPED_TEST(LcmWireContract, FirstEightBytesAreTheReferenceFingerprint) {
   const Bytes fingerprint = bytes_from_hex(LcmReference<TypeParam>::fingerprint_hex);
   ASSERT_EQ(fingerprint.size(), 8u);
   ASSERT_GE(encoded.size(), 8u);
-  EXPECT_EQ(hex_from_bytes(Bytes(encoded.begin(), encoded.begin() + 8)),
-            LcmReference<TypeParam>::fingerprint_hex);
+  EXPECT_EQ(hex_from_bytes(Bytes(encoded.begin(), encoded.begin() + 8)), LcmReference<TypeParam>::fingerprint_hex);
 
   std::uint64_t fingerprint_value = 0;
   for (std::uint8_t b : fingerprint) fingerprint_value = (fingerprint_value << 8) | b;
@@ -40,8 +39,7 @@ TYPED_TEST(LcmWireContract, EncodedSizeIsTheReferenceSize) {
 TYPED_TEST(LcmWireContract, EncodingIsBigEndianFieldsInReferenceOrder) {
   for (std::uint32_t seed : {11u, 12u, 13u}) {
     const TypeParam msg = random_message<TypeParam>(seed);
-    EXPECT_EQ(hex_from_bytes(encode_message(msg)), hex_from_bytes(reference_encoding(msg)))
-        << "seed " << seed;
+    EXPECT_EQ(hex_from_bytes(encode_message(msg)), hex_from_bytes(reference_encoding(msg))) << "seed " << seed;
   }
 }
 

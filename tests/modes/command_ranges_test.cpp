@@ -13,11 +13,11 @@ namespace {
 TEST(CommandRanges, ContactBitsNameTheSingleLiftedLeg) {
   EXPECT_EQ(lifted_leg_from_contact(0x0F), kNoLiftedLeg);
   EXPECT_EQ(lifted_leg_from_contact(0x00), kNoLiftedLeg);  // field left unset by the client
-  EXPECT_EQ(lifted_leg_from_contact(0b1110), 0);             // FR
-  EXPECT_EQ(lifted_leg_from_contact(0b1101), 1);             // FL
-  EXPECT_EQ(lifted_leg_from_contact(0b1011), 2);             // RR
-  EXPECT_EQ(lifted_leg_from_contact(0b0111), 3);             // RL
-  EXPECT_EQ(lifted_leg_from_contact(0x1E), 0);               // high bits ignored
+  EXPECT_EQ(lifted_leg_from_contact(0b1110), 0);           // FR
+  EXPECT_EQ(lifted_leg_from_contact(0b1101), 1);           // FL
+  EXPECT_EQ(lifted_leg_from_contact(0b1011), 2);           // RR
+  EXPECT_EQ(lifted_leg_from_contact(0b0111), 3);           // RL
+  EXPECT_EQ(lifted_leg_from_contact(0x1E), 0);             // high bits ignored
   EXPECT_EQ(lifted_leg_from_contact(0b1100), kInvalidContact);
   EXPECT_EQ(lifted_leg_from_contact(0b1000), kInvalidContact);
 }

@@ -122,8 +122,8 @@ TEST(HighLevelMachine, IllegalSwitchIsBannedAndKeepsTheOldMode) {
 }
 
 TEST(HighLevelMachine, UnknownModeUnavailableModeAndBadGaitAreBanned) {
-  for (const HighLevelCommand& c : {cmd(static_cast<ModeId>(99), 0, 1), cmd(ModeId::Jump3d, 0, 1),
-                                    cmd(ModeId::PureDamper, 4, 1)}) {
+  for (const HighLevelCommand& c :
+       {cmd(static_cast<ModeId>(99), 0, 1), cmd(ModeId::Jump3d, 0, 1), cmd(ModeId::PureDamper, 4, 1)}) {
     Machine m;
     m.tick();
     m.machine.submit(c, m.state.time_s);

@@ -29,11 +29,11 @@ struct Hand {
 
 // stands in `stand`, is lifted 0.25 m by the hand, held, lowered onto its feet and let go
 struct LiftRun {
-  bool lifted_reported = false;   // mode 9 with switch_status LIFTED while in the air
-  double lifted_after_s = -1.0;   // from the start of the pull
+  bool lifted_reported = false;  // mode 9 with switch_status LIFTED while in the air
+  double lifted_after_s = -1.0;  // from the start of the pull
   int mode_after_landing = -1;
   int gait_after_landing = -1;
-  double height_after_s = 0.0;    // trunk height 2 s after letting go
+  double height_after_s = 0.0;  // trunk height 2 s after letting go
 };
 
 LiftRun lift_and_set_down(const HighLevelCommand& stand) {
@@ -119,7 +119,8 @@ TEST(OrientationErrorSim, TippingOverStopsTheStandUntilARecoveryStand) {
   EXPECT_EQ(sim.status().ori_error, 1);
   sim.send(command(ModeId::RecoveryStand, 0), 0.1);
   EXPECT_EQ(sim.status().ori_error, 0);
-  const double took = sim.run_until([&] { return sim.status().order_process_bar == 100 && sim.true_height() > 0.22; }, 12.0);
+  const double took =
+      sim.run_until([&] { return sim.status().order_process_bar == 100 && sim.true_height() > 0.22; }, 12.0);
   EXPECT_GT(took, 0.0);
   EXPECT_EQ(sim.status().switch_status, SwitchStatus::Done);
 }

@@ -20,9 +20,8 @@ TEST(ModeSet, WalkingGaitsRunOnTheMpcAndTheStandsOnTheConfiguredController) {
   for (LocomotionStand stand : {LocomotionStand::Mpc, LocomotionStand::Qp}) {
     const ModeSet modes(config_with(stand));
     for (int id : kWalkingGaitIds) EXPECT_EQ(modes.gaits().find(id), &modes.walking()) << id;
-    const LocomotionGait* expected_stand = stand == LocomotionStand::Mpc
-                                               ? static_cast<const LocomotionGait*>(&modes.walking())
-                                               : &modes.qp_stand_gait();
+    const LocomotionGait* expected_stand =
+        stand == LocomotionStand::Mpc ? static_cast<const LocomotionGait*>(&modes.walking()) : &modes.qp_stand_gait();
     for (int id : kStandGaitIds) EXPECT_EQ(modes.gaits().find(id), expected_stand) << id;
   }
 }

@@ -39,8 +39,9 @@ struct PoseCase {
 };
 
 TEST(PoseControlSim, ReachesCommandedRollPitchYawAndHeightOffset) {
-  for (const PoseCase& p : {PoseCase{0.3, 0.0, 0.0, 0.0}, PoseCase{0.0, 0.3, 0.0, 0.0}, PoseCase{0.0, -0.3, 0.0, 0.0},
-                            PoseCase{0.0, 0.0, -0.4, 0.0}, PoseCase{0.0, 0.0, 0.0, -0.05}, PoseCase{0.15, -0.1, 0.2, 0.02}}) {
+  for (const PoseCase& p :
+       {PoseCase{0.3, 0.0, 0.0, 0.0}, PoseCase{0.0, 0.3, 0.0, 0.0}, PoseCase{0.0, -0.3, 0.0, 0.0},
+        PoseCase{0.0, 0.0, -0.4, 0.0}, PoseCase{0.0, 0.0, 0.0, -0.05}, PoseCase{0.15, -0.1, 0.2, 0.02}}) {
     ModeSim sim;
     stand_in_pose_control(sim);
     const double yaw0 = sim.true_rpy().z();

@@ -32,9 +32,10 @@ struct PoseCase {
 };
 
 TEST(QpStandSim, ReachesRollPitchYawAndHeightTargets) {
-  for (const PoseCase& p : {PoseCase{0.3, 0.0, 0.0, 0.235}, PoseCase{0.0, 0.25, 0.0, 0.235}, PoseCase{0.0, -0.2, 0.0, 0.235},
-                            PoseCase{0.0, 0.0, 0.4, 0.235}, PoseCase{0.0, 0.0, 0.0, 0.2}, PoseCase{0.0, 0.0, 0.0, 0.28},
-                            PoseCase{0.15, 0.1, -0.2, 0.25}}) {
+  for (const PoseCase& p :
+       {PoseCase{0.3, 0.0, 0.0, 0.235}, PoseCase{0.0, 0.25, 0.0, 0.235}, PoseCase{0.0, -0.2, 0.0, 0.235},
+        PoseCase{0.0, 0.0, 0.4, 0.235}, PoseCase{0.0, 0.0, 0.0, 0.2}, PoseCase{0.0, 0.0, 0.0, 0.28},
+        PoseCase{0.15, 0.1, -0.2, 0.25}}) {
     ModeSim sim;
     stand_in_qp_stand(sim);
     const double yaw0 = sim.true_rpy().z();
@@ -42,8 +43,8 @@ TEST(QpStandSim, ReachesRollPitchYawAndHeightTargets) {
     EXPECT_EQ(sim.status().switch_status, SwitchStatus::Transitioning);
     sim.run(2.5);
     const Eigen::Vector3d rpy = sim.true_rpy();
-    const std::string label = std::to_string(p.roll) + " " + std::to_string(p.pitch) + " " + std::to_string(p.yaw) + " " +
-                              std::to_string(p.height);
+    const std::string label = std::to_string(p.roll) + " " + std::to_string(p.pitch) + " " + std::to_string(p.yaw) +
+                              " " + std::to_string(p.height);
     EXPECT_NEAR(rpy.x(), p.roll, 0.03) << label;
     EXPECT_NEAR(rpy.y(), p.pitch, 0.03) << label;
     EXPECT_NEAR(wrap_angle(rpy.z() - yaw0), p.yaw, 0.03) << label;

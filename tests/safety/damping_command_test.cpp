@@ -13,8 +13,8 @@ TEST(DampingCommand, TheMotorLawGivesMinusKdTimesTheJointSpeed) {
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     // tau = tau_ff + kp (q_des - q) + kd (qd_des - qd) at any q and qd
     const double q_now = 0.3, qd_now = -1.7;
-    const double tau = command.tau_ff[i] + command.kp[i] * (command.q_des[i] - q_now) +
-                       command.kd[i] * (command.qd_des[i] - qd_now);
+    const double tau =
+        command.tau_ff[i] + command.kp[i] * (command.q_des[i] - q_now) + command.kd[i] * (command.qd_des[i] - qd_now);
     EXPECT_DOUBLE_EQ(tau, -4.0 * qd_now) << i;
     EXPECT_EQ(command.q_des[i], q[i]) << i;
   }

@@ -50,8 +50,10 @@ TEST(FfmpegPipe, VideoKeepsFrameCountOrientationAndColours) {
     EXPECT_EQ(pipe.frames_written(), 3u);
     ASSERT_TRUE(pipe.finish());
   }
-  const auto probe = test::run_command("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                                       "stream=nb_read_frames,width,height -of csv=p=0 " + test::quoted(path));
+  const auto probe = test::run_command(
+      "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+      "stream=nb_read_frames,width,height -of csv=p=0 " +
+      test::quoted(path));
   EXPECT_EQ(probe.output, "64,32,3\n");
   const auto rgb = decode_rgb(path, dir);
   ASSERT_EQ(rgb.size(), 3u * kWidth * kHeight);

@@ -66,8 +66,8 @@ TEST(SceneRenderer, DrawsTheRobotWhereTheFollowingCameraLooks) {
   renderer.render(viewport, OverlayText{}, "");
   renderer.read_rgb(viewport, without_robot.data());
 
-  const double centre = mean_difference(with_robot, without_robot, kWidth / 3, 2 * kWidth / 3, kHeight / 3,
-                                        2 * kHeight / 3);
+  const double centre =
+      mean_difference(with_robot, without_robot, kWidth / 3, 2 * kWidth / 3, kHeight / 3, 2 * kHeight / 3);
   const double corners = mean_difference(with_robot, without_robot, 0, kWidth / 8, 0, kHeight / 8);
   EXPECT_GT(centre, 15.0);
   EXPECT_LT(corners, 2.0);

@@ -75,9 +75,9 @@ class ScratchDir {
 inline std::vector<std::uint8_t> decode_gray_frame(const std::string& media, int index, int width, int height,
                                                    const ScratchDir& dir) {
   const std::string raw = dir / ("frame" + std::to_string(index) + ".gray");
-  const CommandResult decoded =
-      run_command("ffmpeg -v error -y -i " + quoted(media) + " -vf " + quoted("select=eq(n\\," + std::to_string(index) + ")") +
-                  " -frames:v 1 -f rawvideo -pix_fmt gray " + quoted(raw));
+  const CommandResult decoded = run_command("ffmpeg -v error -y -i " + quoted(media) + " -vf " +
+                                            quoted("select=eq(n\\," + std::to_string(index) + ")") +
+                                            " -frames:v 1 -f rawvideo -pix_fmt gray " + quoted(raw));
   const std::string bytes = read_file(raw);
   if (decoded.exit_code != 0 || bytes.size() != static_cast<std::size_t>(width) * height) return {};
   return {bytes.begin(), bytes.end()};

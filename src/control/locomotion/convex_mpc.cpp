@@ -54,8 +54,8 @@ void ConvexMpc::state_matrix(double yaw, Eigen::Matrix<double, kSrbStates, kSrbS
   const Eigen::Matrix3d rz = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
   a.setZero();
   a.block<3, 3>(0, 6) = rz.transpose();  // rpy rates from world angular velocity (small roll/pitch)
-  a.block<3, 3>(3, 9).setIdentity();      // position from velocity
-  a(11, 12) = 1.0;                        // gravity state drives vz
+  a.block<3, 3>(3, 9).setIdentity();     // position from velocity
+  a(11, 12) = 1.0;                       // gravity state drives vz
 }
 
 void ConvexMpc::input_matrix(const ConvexMpcConfig& config, double yaw,

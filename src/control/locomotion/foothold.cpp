@@ -13,8 +13,8 @@ Eigen::Vector3d raibert_foothold(const Eigen::Vector3d& hip_world, const Eigen::
   Eigen::Vector2d offset = Eigen::Vector2d::Zero();
   for (int axis = 0; axis < 2; ++axis) {
     // symmetric stance about the hip, corrected by the velocity error
-    offset[axis] = 0.5 * stance_duration_s * velocity[axis] +
-                   config.velocity_gain * (velocity[axis] - velocity_desired[axis]);
+    offset[axis] =
+        0.5 * stance_duration_s * velocity[axis] + config.velocity_gain * (velocity[axis] - velocity_desired[axis]);
   }
   // centrifugal term: the foot goes outwards by half the pendulum offset (h / g) a that carries the
   // centripetal acceleration a = v x omega_des through the stance

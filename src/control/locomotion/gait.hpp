@@ -13,12 +13,12 @@ namespace cerebellum {
 struct GaitPattern {
   int id = 0;
   int period_segments = 10;
-  std::array<int, kNumLegs> offsets{};   // segment in which stance starts (FR, FL, RR, RL)
-  std::array<int, kNumLegs> stance{};    // stance length in segments
+  std::array<int, kNumLegs> offsets{};  // segment in which stance starts (FR, FL, RR, RL)
+  std::array<int, kNumLegs> stance{};   // stance length in segments
   // velocity limits (vx, vy, yaw rate), clamped, not rejected
   std::array<double, 3> velocity_min{};
   std::array<double, 3> velocity_max{};
-  bool adapts_frequency = false;         // GaitKind::FrequencyAdapting: the period follows the speed
+  bool adapts_frequency = false;  // GaitKind::FrequencyAdapting: the period follows the speed
 };
 
 // the pattern of a gait id of the gait table, or nothing for an unknown id
@@ -74,7 +74,7 @@ class GaitScheduler {
 
   double segment_s_;
   GaitPattern pattern_;
-  int segment_ = 0;             // current segment in the cycle
+  int segment_ = 0;  // current segment in the cycle
   double time_in_segment_s_ = 0.0;
 };
 

@@ -38,8 +38,8 @@ struct GaitSpec {
   int id;
   const char* name;
   GaitKind kind;
-  GaitCycle cycle;                        // for a frequency-adapting gait: the cycle at rest
-  std::array<int, kNumLegs> offsets;      // segment in which stance starts (FR, FL, RR, RL)
+  GaitCycle cycle;                    // for a frequency-adapting gait: the cycle at rest
+  std::array<int, kNumLegs> offsets;  // segment in which stance starts (FR, FL, RR, RL)
   // velocity limits (vx, vy m/s; yaw rate rad/s), clamped, not rejected; zero for stands
   std::array<double, 3> velocity_min;
   std::array<double, 3> velocity_max;
@@ -48,20 +48,62 @@ struct GaitSpec {
 
 inline constexpr std::array<GaitSpec, 9> kGaitTable{{
     {kStandGaitId, "stand", GaitKind::Stand, {10, 10}, {0, 0, 0, 0}, {0, 0, 0}, {0, 0, 0}, kDefaultStepHeightM},
-    {2, "pronk", GaitKind::Walking, {10, 4}, {0, 0, 0, 0}, {-0.10, -0.15, -0.50}, {0.20, 0.15, 0.50},
+    {2,
+     "pronk",
+     GaitKind::Walking,
+     {10, 4},
+     {0, 0, 0, 0},
+     {-0.10, -0.15, -0.50},
+     {0.20, 0.15, 0.50},
      kDefaultStepHeightM},
-    {3, "medium trot", GaitKind::Walking, {12, 6}, {0, 6, 6, 0}, {-1.2, -0.4, -2.25}, {1.2, 0.4, 2.25},
+    {3,
+     "medium trot",
+     GaitKind::Walking,
+     {12, 6},
+     {0, 6, 6, 0},
+     {-1.2, -0.4, -2.25},
+     {1.2, 0.4, 2.25},
      kDefaultStepHeightM},
-    {4, "walk-dog trot", GaitKind::Walking, {12, 6}, {0, 6, 6, 0}, {-0.65, -0.4, -0.80}, {0.65, 0.4, 0.80},
+    {4,
+     "walk-dog trot",
+     GaitKind::Walking,
+     {12, 6},
+     {0, 6, 6, 0},
+     {-0.65, -0.4, -0.80},
+     {0.65, 0.4, 0.80},
      kDefaultStepHeightM},
     {7, "bound", GaitKind::Walking, {12, 8}, {6, 6, 0, 0}, {-0.3, -0.3, -1.5}, {0.3, 0.3, 1.5}, kDefaultStepHeightM},
-    {10, "flying trot", GaitKind::Walking, {10, 4}, {0, 5, 5, 0}, {-1.2, -0.55, -2.5}, {1.6, 0.55, 2.5},
+    {10,
+     "flying trot",
+     GaitKind::Walking,
+     {10, 4},
+     {0, 5, 5, 0},
+     {-1.2, -0.55, -2.5},
+     {1.6, 0.55, 2.5},
      kDefaultStepHeightM},
-    {kVariableTrotGaitId, "variable-frequency trot", GaitKind::FrequencyAdapting, {24, 16}, {0, 12, 12, 0}, {-1.2, -0.6, -2.5},
-     {1.6, 0.6, 2.5}, kDefaultStepHeightM},
-    {27, "slow trot", GaitKind::Walking, {20, 12}, {0, 10, 10, 0}, {-0.60, -0.2, -1.30}, {0.60, 0.2, 1.30},
+    {kVariableTrotGaitId,
+     "variable-frequency trot",
+     GaitKind::FrequencyAdapting,
+     {24, 16},
+     {0, 12, 12, 0},
+     {-1.2, -0.6, -2.5},
+     {1.6, 0.6, 2.5},
      kDefaultStepHeightM},
-    {kStandWithoutPushRecoveryGaitId, "stand without push recovery", GaitKind::Stand, {10, 10}, {0, 0, 0, 0}, {0, 0, 0}, {0, 0, 0},
+    {27,
+     "slow trot",
+     GaitKind::Walking,
+     {20, 12},
+     {0, 10, 10, 0},
+     {-0.60, -0.2, -1.30},
+     {0.60, 0.2, 1.30},
+     kDefaultStepHeightM},
+    {kStandWithoutPushRecoveryGaitId,
+     "stand without push recovery",
+     GaitKind::Stand,
+     {10, 10},
+     {0, 0, 0, 0},
+     {0, 0, 0},
+     {0, 0, 0},
      kDefaultStepHeightM},
 }};
 

@@ -22,9 +22,7 @@ Eigen::Vector3d leg_vector(const JointArray<double>& values, std::size_t leg) {
   return {values[3 * leg], values[3 * leg + 1], values[3 * leg + 2]};
 }
 
-Eigen::Matrix3d yaw_rotation(double yaw) {
-  return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
-}
+Eigen::Matrix3d yaw_rotation(double yaw) { return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
 
 }  // namespace
 
@@ -101,12 +99,11 @@ void LocomotionController::ramp_velocity() {
   velocity_.z() = approach(velocity_.z(), target_.velocity.z(), config_.max_yaw_accel_rad_s2 * config_.tick_s);
 }
 
-Eigen::Vector3d LocomotionController::hip_on_ground_world(std::size_t leg, const RobotState& state,
-                                                          double ahead_s, double yaw_ahead_s) const {
-  const double half_width =
-      target_.vertical_legs ? config_.vertical_leg_half_width_m : config_.pigeon_toe_half_width_m;
-  const Eigen::Vector3d hip_body(is_front_leg(leg) ? robot::kHipX : -robot::kHipX,
-                                 leg_side_sign(leg) * half_width, 0.0);
+Eigen::Vector3d LocomotionController::hip_on_ground_world(std::size_t leg, const RobotState& state, double ahead_s,
+                                                          double yaw_ahead_s) const {
+  const double half_width = target_.vertical_legs ? config_.vertical_leg_half_width_m : config_.pigeon_toe_half_width_m;
+  const Eigen::Vector3d hip_body(is_front_leg(leg) ? robot::kHipX : -robot::kHipX, leg_side_sign(leg) * half_width,
+                                 0.0);
   const double yaw_ahead = state.rpy.z() + velocity_.z() * yaw_ahead_s;
   const Eigen::Vector3d velocity_world = yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0);
   Eigen::Vector3d hip = state.position_world + yaw_rotation(yaw_ahead) * hip_body + velocity_world * ahead_s;
@@ -141,9 +138,9 @@ void LocomotionController::post_mpc(const RobotState& state) {
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     // a foot in the air pushes next from where it will land
     const LegPhase phase = scheduler_.leg_phase(leg);
-    in.foot_from_com[leg] = phase.stance ? Eigen::Vector3d(body_to_world * (state.foot_position_body[leg] -
-                                                                           config_.com_offset_body))
-                                         : Eigen::Vector3d(foothold_world(leg, phase, state) - com_world);
+    in.foot_from_com[leg] =
+        phase.stance ? Eigen::Vector3d(body_to_world * (state.foot_position_body[leg] - config_.com_offset_body))
+                     : Eigen::Vector3d(foothold_world(leg, phase, state) - com_world);
   }
   in.contact = scheduler_.horizon_contacts<kMpcHorizon>();
   worker_.post(in);
@@ -189,13 +186,12 @@ Eigen::Vector3d LocomotionController::foothold_world(std::size_t leg, const LegP
   const double remaining_s = (1.0 - phase.swing_phase) * phase.swing_duration_s;
   // the hip where the body will be at touchdown, turned on by half the stance so that the
   // foot is under the hip in the middle of its stance
-  const Eigen::Vector3d hip =
-      hip_on_ground_world(leg, state, remaining_s, remaining_s + 0.5 * phase.stance_duration_s);
+  const Eigen::Vector3d hip = hip_on_ground_world(leg, state, remaining_s, remaining_s + 0.5 * phase.stance_duration_s);
   const Eigen::Vector3d velocity_des_world =
       yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
-  Eigen::Vector3d foothold = raibert_foothold(hip, state.velocity_world, velocity_des_world, velocity_.z(),
-                                              state.rpy.z(), phase.stance_duration_s, target_.height_m,
-                                              config_.foothold);
+  Eigen::Vector3d foothold =
+      raibert_foothold(hip, state.velocity_world, velocity_des_world, velocity_.z(), state.rpy.z(),
+                       phase.stance_duration_s, target_.height_m, config_.foothold);
   foothold.z() += robot::kFootRadius;  // foot centre above the ground
   return foothold;
 }
@@ -278,8 +274,8 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
   yaw_des_ = wrap_angle(yaw_des_ + velocity_.z() * config_.tick_s);
   // where the commanded velocity would have taken the trunk, at most a set distance ahead or behind
   // (the MPC's only integral action: leg friction and swing momentum otherwise slow it down)
-  position_des_ += (yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0)).head<2>() *
-                   config_.tick_s;
+  position_des_ +=
+      (yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0)).head<2>() * config_.tick_s;
   const Eigen::Vector2d lag = position_des_ - state.position_world.head<2>();
   if (lag.norm() > config_.max_position_lag_m) {
     position_des_ = state.position_world.head<2>() + lag.normalized() * config_.max_position_lag_m;

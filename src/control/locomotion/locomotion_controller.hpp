@@ -25,7 +25,7 @@ struct LocomotionConfig {
   FootholdConfig foothold;
   double default_height_m = 0.25;
   double hop_step_height_fraction = 0.3;  // pronk: share of the step height the feet are lifted
-  double swing_kp = 40.0;  // joint gains tracking the swing trajectory (motor PD at 1 kHz)
+  double swing_kp = 40.0;                 // joint gains tracking the swing trajectory (motor PD at 1 kHz)
   double swing_kd = 1.0;
   // joint damping toward a foot at rest on the ground; its forces are outside the MPC's friction
   // cone, and at 0.8 they made loaded feet slip in turns; at 0.2 a 15 N s push fell
@@ -50,7 +50,7 @@ struct LocomotionConfig {
   // most 3.9 m/s^2 with no margin for the gait's own forces; 2.5 still fell in the soak
   double max_centripetal_accel_m_s2 = 2.0;
   double vertical_leg_half_width_m = robot::kHipY + robot::kAbadLength;  // value bit1 = 1: feet under the hips
-  double pigeon_toe_half_width_m = 0.11;     // value bit1 = 0: energy-saving narrower stance
+  double pigeon_toe_half_width_m = 0.11;  // value bit1 = 0: energy-saving narrower stance
   Eigen::Vector3d com_offset_body{0.013, 0.0, 0.0};
   int failed_solves_to_give_up = 3;
 };

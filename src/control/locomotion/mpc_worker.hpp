@@ -32,8 +32,8 @@ class MpcWorker {
   std::condition_variable wake_;
   MpcInput input_;
   MpcOutput output_;
-  bool pending_ = false;   // posted, not yet solved
-  bool ready_ = false;     // solved, not yet taken
+  bool pending_ = false;  // posted, not yet solved
+  bool ready_ = false;    // solved, not yet taken
   bool stopping_ = false;
   std::thread thread_;
 };

@@ -64,8 +64,7 @@ QpStatus AlglibQpSolver::run(const QpProblem& problem, QpSolution& solution) {
   Workspace& ws = *workspace_;
   if (ws.cholesky.rows() < n) ws.cholesky.setZero(n, n);
   if (ws.scratch.size() < n) ws.scratch.setZero(n);
-  if (!cholesky_upper(problem.hessian, settings_.min_pivot_ratio,
-                      ws.cholesky.topLeftCorner(n, n))) {
+  if (!cholesky_upper(problem.hessian, settings_.min_pivot_ratio, ws.cholesky.topLeftCorner(n, n))) {
     return QpStatus::NotConvex;
   }
 
@@ -108,8 +107,7 @@ QpStatus AlglibQpSolver::run(const QpProblem& problem, QpSolution& solution) {
     return QpStatus::NotConvex;
   }
 
-  solution.iterations =
-      static_cast<int>(ws.report.outeriterationscount + ws.report.inneriterationscount);
+  solution.iterations = static_cast<int>(ws.report.outeriterationscount + ws.report.inneriterationscount);
   const QpStatus status = status_from_termination(ws.report.terminationtype);
   if (status != QpStatus::Solved && status != QpStatus::MaxIterations) return status;
 

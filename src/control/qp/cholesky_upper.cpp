@@ -4,8 +4,7 @@
 
 namespace cerebellum::qp {
 
-bool cholesky_upper(const Eigen::MatrixXd& hessian, double min_pivot_ratio,
-                    Eigen::Ref<Eigen::MatrixXd> upper) {
+bool cholesky_upper(const Eigen::MatrixXd& hessian, double min_pivot_ratio, Eigen::Ref<Eigen::MatrixXd> upper) {
   const Eigen::Index n = hessian.rows();
   const double max_diagonal = hessian.diagonal().maxCoeff();
   if (!(max_diagonal > 0.0)) return false;
@@ -23,8 +22,7 @@ bool cholesky_upper(const Eigen::MatrixXd& hessian, double min_pivot_ratio,
   return true;
 }
 
-void invert_upper_triangular(const Eigen::Ref<const Eigen::MatrixXd>& upper,
-                             Eigen::Ref<Eigen::MatrixXd> inverse) {
+void invert_upper_triangular(const Eigen::Ref<const Eigen::MatrixXd>& upper, Eigen::Ref<Eigen::MatrixXd> inverse) {
   const Eigen::Index n = upper.rows();
   inverse.setZero();
   // column j solves U y = e_j by back substitution, sweeping columns of U (contiguous memory)

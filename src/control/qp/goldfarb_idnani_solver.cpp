@@ -18,8 +18,7 @@ std::size_t to_size(Eigen::Index i) { return static_cast<std::size_t>(i); }
 
 }  // namespace
 
-GoldfarbIdnaniSolver::GoldfarbIdnaniSolver(const QpDimensions& max_dims,
-                                           const GoldfarbIdnaniSettings& settings)
+GoldfarbIdnaniSolver::GoldfarbIdnaniSolver(const QpDimensions& max_dims, const GoldfarbIdnaniSettings& settings)
     : settings_(settings) {
   reserve(max_dims);
 }
@@ -32,8 +31,7 @@ void GoldfarbIdnaniSolver::reserve(const QpDimensions& max_dims) {
     cholesky_.setZero(n, n);
     basis_.setZero(n, n);
     triangle_.setZero(n, n);
-    for (Eigen::VectorXd* v :
-         {&x_, &normal_, &projected_, &primal_dir_, &dual_dir_, &multipliers_}) {
+    for (Eigen::VectorXd* v : {&x_, &normal_, &projected_, &primal_dir_, &dual_dir_, &multipliers_}) {
       v->setZero(n);
     }
     active_.resize(to_size(n));
@@ -66,8 +64,7 @@ QpStatus GoldfarbIdnaniSolver::run(const QpProblem& problem, QpSolution& solutio
   if (has_crossed_bounds(problem)) return QpStatus::Infeasible;
 
   // H = U' U, J = U^-1 = L^-T with no constraint active
-  if (!cholesky_upper(problem.hessian, settings_.min_pivot_ratio,
-                      cholesky_.topLeftCorner(n_, n_))) {
+  if (!cholesky_upper(problem.hessian, settings_.min_pivot_ratio, cholesky_.topLeftCorner(n_, n_))) {
     return QpStatus::NotConvex;
   }
   auto basis = basis_.topLeftCorner(n_, n_);

@@ -30,8 +30,7 @@ struct GoldfarbIdnaniSettings {
 
 class GoldfarbIdnaniSolver final : public QpSolver {
  public:
-  explicit GoldfarbIdnaniSolver(const QpDimensions& max_dims = {},
-                                const GoldfarbIdnaniSettings& settings = {});
+  explicit GoldfarbIdnaniSolver(const QpDimensions& max_dims = {}, const GoldfarbIdnaniSettings& settings = {});
 
   // sizes the workspace for problems up to these dimensions
   void reserve(const QpDimensions& max_dims);

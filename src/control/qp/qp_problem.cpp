@@ -16,23 +16,20 @@ void QpProblem::resize(const QpDimensions& dims) {
   ineq_upper.setConstant(dims.inequalities, inf);
 }
 
-QpDimensions QpProblem::dimensions() const {
-  return {hessian.rows(), eq_matrix.rows(), ineq_matrix.rows()};
-}
+QpDimensions QpProblem::dimensions() const { return {hessian.rows(), eq_matrix.rows(), ineq_matrix.rows()}; }
 
 bool has_valid_shape_and_values(const QpProblem& p) {
   const Eigen::Index n = p.hessian.rows();
   const Eigen::Index m_eq = p.eq_matrix.rows();
   const Eigen::Index m_in = p.ineq_matrix.rows();
-  const bool shapes_agree = n > 0 && p.hessian.cols() == n && p.linear.size() == n &&
-                            p.eq_matrix.cols() == n && p.eq_rhs.size() == m_eq &&
-                            p.ineq_matrix.cols() == n && p.ineq_lower.size() == m_in &&
+  const bool shapes_agree = n > 0 && p.hessian.cols() == n && p.linear.size() == n && p.eq_matrix.cols() == n &&
+                            p.eq_rhs.size() == m_eq && p.ineq_matrix.cols() == n && p.ineq_lower.size() == m_in &&
                             p.ineq_upper.size() == m_in;
   if (!shapes_agree) return false;
   // bounds may be infinite but never NaN
   const bool bounds_not_nan = !p.ineq_lower.hasNaN() && !p.ineq_upper.hasNaN();
-  return bounds_not_nan && p.hessian.allFinite() && p.linear.allFinite() &&
-         p.eq_matrix.allFinite() && p.eq_rhs.allFinite() && p.ineq_matrix.allFinite();
+  return bounds_not_nan && p.hessian.allFinite() && p.linear.allFinite() && p.eq_matrix.allFinite() &&
+         p.eq_rhs.allFinite() && p.ineq_matrix.allFinite();
 }
 
 bool has_crossed_bounds(const QpProblem& p) {

@@ -111,7 +111,8 @@ localization_lcmt make_localization(const RobotState& state) {
 
 danger_states_lcmt make_danger_states(const RobotState& state) {
   danger_states_lcmt message{};
-  for (std::size_t i = 0; i < kNumJoints; ++i) message.motor_temperature[i] = static_cast<float>(state.temperature_c[i]);
+  for (std::size_t i = 0; i < kNumJoints; ++i)
+    message.motor_temperature[i] = static_cast<float>(state.temperature_c[i]);
   return message;
 }
 

@@ -31,24 +31,28 @@ std::string describe_gait_file(const UserGaitFile& file) {
   }
   long duration_ms = 0;
   for (const HighLevelCommand& step : file.parameters.steps) duration_ms += step.duration;
-  return "gait parameters: " + std::to_string(file.parameters.steps.size()) + " steps, " +
-         std::to_string(duration_ms) + " ms";
+  return "gait parameters: " + std::to_string(file.parameters.steps.size()) + " steps, " + std::to_string(duration_ms) +
+         " ms";
 }
 
 }  // namespace
 
 LcmHighLevelAdapter::LcmHighLevelAdapter(HighLevelMachine& machine, const HighLevelLcmConfig& config,
                                          double loop_period_s, std::FILE* log)
-    : machine_(machine), log_(log), keepalive_s_(config.response_keepalive_s),
+    : machine_(machine),
+      log_(log),
+      keepalive_s_(config.response_keepalive_s),
       command_lcm_(open_lcm_url(config.command_url, kInterfaceName)),
       response_lcm_(open_lcm_url(config.response_url, kInterfaceName)),
-      odometry_lcm_(open_lcm_url(config.odometry_url, kInterfaceName)), schedule_(loop_period_s),
+      odometry_lcm_(open_lcm_url(config.odometry_url, kInterfaceName)),
+      schedule_(loop_period_s),
       refusal_log_(log, kInterfaceName, "refusals (BAN_TRANS)", kRefusalLinesPerSecond),
       gait_file_log_(log, kInterfaceName, "user_gait_file results", kGaitFileLinesPerSecond),
       count_log_period_(wall_seconds()) {
   command_lcm_->subscribe(kCommandChannel, &LcmHighLevelAdapter::on_command, this);
   command_lcm_->subscribe(kGaitFileChannel, &LcmHighLevelAdapter::on_gait_file, this);
-  std::fprintf(log_, "highlevel: robot_control_cmd and user_gait_file on %s; robot_control_response and "
+  std::fprintf(log_,
+               "highlevel: robot_control_cmd and user_gait_file on %s; robot_control_response and "
                "motor_temperature on %s; global_to_robot on %s\n",
                config.command_url.c_str(), config.response_url.c_str(), config.odometry_url.c_str());
   std::fflush(log_);
@@ -207,8 +211,10 @@ void LcmHighLevelAdapter::log_counts_once_per_second() {
     std::fprintf(log_, "highlevel: robot_control_cmd packets rejected in the last second: %s\n", text.c_str());
   }
   if (now.timeouts != before.timeouts) {
-    std::fprintf(log_, "highlevel: no robot_control_cmd for 0.5 s: get-down protection (PureDamper, or Off when "
-                 "Off); %llu times so far\n", static_cast<unsigned long long>(now.timeouts));
+    std::fprintf(log_,
+                 "highlevel: no robot_control_cmd for 0.5 s: get-down protection (PureDamper, or Off when "
+                 "Off); %llu times so far\n",
+                 static_cast<unsigned long long>(now.timeouts));
   }
   if (now.telemetry_dropped != before.telemetry_dropped) {
     std::fprintf(log_, "highlevel: %llu feedback cycles dropped (the interface thread fell behind)\n",
@@ -230,10 +236,10 @@ void LcmHighLevelAdapter::finish(std::FILE* out) {
                "%llu timeouts; published %llu responses, %llu odometry, %llu temperatures; user gait files "
                "%llu stored, %llu refused; %llu feedback cycles dropped\n",
                ull(c.commands_submitted), ull(m.new_commands.load()), ull(m.banned_transitions.load()),
-               ull(m.rejected_non_finite.load()), ull(m.queue_full.load()), ull(c.wrong_fingerprint),
-               ull(c.truncated), ull(c.oversized), ull(m.timeouts.load()), ull(c.responses_published),
-               ull(c.odometry_published), ull(c.temperatures_published), ull(c.gait_files_accepted),
-               ull(c.gait_files_refused), ull(c.telemetry_dropped));
+               ull(m.rejected_non_finite.load()), ull(m.queue_full.load()), ull(c.wrong_fingerprint), ull(c.truncated),
+               ull(c.oversized), ull(m.timeouts.load()), ull(c.responses_published), ull(c.odometry_published),
+               ull(c.temperatures_published), ull(c.gait_files_accepted), ull(c.gait_files_refused),
+               ull(c.telemetry_dropped));
   std::fflush(out);
 }
 

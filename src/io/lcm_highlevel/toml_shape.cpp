@@ -75,9 +75,7 @@ std::string toml_shape_problem(std::string_view text, const TomlShapeLimits& lim
         if (nesting > 0) --nesting;
         break;
       case '=':
-      case ',':
-        dots_in_chain = 0;
-        break;
+      case ',': dots_in_chain = 0; break;
       default: break;
     }
     ++i;

@@ -30,8 +30,11 @@ void publish_message(lcm::LCM& lcm, const char* channel, const Message& message)
 }  // namespace
 
 LcmMotorSdkAdapter::LcmMotorSdkAdapter(const MotorSdkConfig& config, std::FILE* log)
-    : source_(config.parameters), log_(log), control_lcm_(open_lcm_url(config.control_url, kInterfaceName)),
-      estimator_lcm_(open_lcm_url(config.estimator_url, kInterfaceName)), count_log_period_(wall_seconds()) {
+    : source_(config.parameters),
+      log_(log),
+      control_lcm_(open_lcm_url(config.control_url, kInterfaceName)),
+      estimator_lcm_(open_lcm_url(config.estimator_url, kInterfaceName)),
+      count_log_period_(wall_seconds()) {
   control_lcm_->subscribe(kMotorCtrlChannel, &LcmMotorSdkAdapter::on_motor_ctrl, this);
   thread_.start([this] { step(); }, [this] { drain(); });
 }
@@ -68,9 +71,7 @@ void LcmMotorSdkAdapter::drain() {
 void LcmMotorSdkAdapter::on_motor_ctrl(const lcm::ReceiveBuffer* buffer, const std::string&) {
   JointCommand frame;
   switch (decode_motor_ctrl(buffer->data, buffer->data_size, frame)) {
-    case WireDecode::Ok:
-      source_.mailbox().push(frame, robot_time_s_.load(std::memory_order_relaxed));
-      return;
+    case WireDecode::Ok: source_.mailbox().push(frame, robot_time_s_.load(std::memory_order_relaxed)); return;
     case WireDecode::WrongFingerprint: wrong_fingerprint_.fetch_add(1, std::memory_order_relaxed); return;
     case WireDecode::Truncated: truncated_.fetch_add(1, std::memory_order_relaxed); return;
     case WireDecode::Oversized: oversized_.fetch_add(1, std::memory_order_relaxed); return;
@@ -97,8 +98,9 @@ void LcmMotorSdkAdapter::log_changes(const MotorSdkStatus& status) {
   if (status.motor_mode && !last_status_.motor_mode) {
     message = "motor mode entered; err_flag 0x02 until all-zero frames activate it";
   } else if (is_lost && !was_lost) {
-    message = "err_flag 0x02: communication lost over 500 ms; damping, the robot lies down; send all-zero "
-              "frames to recover";
+    message =
+        "err_flag 0x02: communication lost over 500 ms; damping, the robot lies down; send all-zero "
+        "frames to recover";
   } else if (!is_lost && was_lost && status.motor_mode) {
     message = "err_flag bit 1 cleared by all-zero frames; commands are executed";
   }
@@ -107,8 +109,10 @@ void LcmMotorSdkAdapter::log_changes(const MotorSdkStatus& status) {
   if (!refusal_logged_ && source_.last_refusal_holder() != nullptr) {
     refusal_logged_ = true;
     message = source_.last_refusal_holder();
-    std::fprintf(log_, "motor sdk: motor_ctrl refused: %s has the robot (motor mode is entered only from Off or "
-                 "PureDamper: mc.startup off or damper)\n", message);
+    std::fprintf(log_,
+                 "motor sdk: motor_ctrl refused: %s has the robot (motor mode is entered only from Off or "
+                 "PureDamper: mc.startup off or damper)\n",
+                 message);
   }
   if (message != nullptr) std::fflush(log_);
 }
@@ -123,7 +127,8 @@ void LcmMotorSdkAdapter::log_counts_once_per_second() {
   append_count(text, now.rejected.oversized - before.rejected.oversized, "oversized");
   append_count(text, now.rejected.non_finite - before.rejected.non_finite, "with NaN/Inf");
   append_count(text, now.source.frames_dropped - before.source.frames_dropped, "dropped (mailbox full)");
-  if (!text.empty()) std::fprintf(log_, "motor sdk: motor_ctrl packets rejected in the last second: %s\n", text.c_str());
+  if (!text.empty())
+    std::fprintf(log_, "motor sdk: motor_ctrl packets rejected in the last second: %s\n", text.c_str());
   text.clear();
   append_count(text, now.source.clamped_gains - before.source.clamped_gains, "kp/kd");
   append_count(text, now.source.clamped_velocities - before.source.clamped_velocities, "qd_des");
@@ -131,7 +136,7 @@ void LcmMotorSdkAdapter::log_counts_once_per_second() {
   append_count(text, now.source.clamped_positions - before.source.clamped_positions, "q_des at a joint limit");
   append_count(text, now.source.clamped_jumps - before.source.clamped_jumps, "q_des jumps");
   append_count(text, now.source.frames_ignored_while_lost - before.source.frames_ignored_while_lost,
-           "non-zero frames ignored while err_flag bit 1 is set");
+               "non-zero frames ignored while err_flag bit 1 is set");
   if (!text.empty()) std::fprintf(log_, "motor sdk: joint values clamped in the last second: %s\n", text.c_str());
   std::fflush(log_);
   logged_counts_ = now;

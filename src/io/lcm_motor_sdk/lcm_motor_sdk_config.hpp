@@ -13,8 +13,8 @@ struct MotorSdkConfig {
   bool enabled = false;
   std::string control_url = "udpm://239.255.76.67:7667?ttl=255";    // motor_ctrl, spi_data, ...
   std::string estimator_url = "udpm://239.255.76.67:7669?ttl=255";  // state_estimator
-  std::string user_parameter_file;  // empty: the rules' defaults
-  MotorSdkParameters parameters;    // position_mutation_limit comes from the user parameter file
+  std::string user_parameter_file;                                  // empty: the rules' defaults
+  MotorSdkParameters parameters;  // position_mutation_limit comes from the user parameter file
 };
 
 }  // namespace cerebellum

@@ -31,7 +31,8 @@ state_estimator_lcmt make_state_estimator(const RobotState& state) {
   message.quat[3] = static_cast<float>(state.orientation.z());
   put_vector3(message.aBody, state.accel_body);
   put_vector3(message.aWorld, state.accel_world);
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) message.contactEstimate[leg] = static_cast<float>(state.contact[leg]);
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg)
+    message.contactEstimate[leg] = static_cast<float>(state.contact[leg]);
   message.timestamp = static_cast<std::int64_t>(std::llround(state.time_s * 1e9));
   return message;
 }

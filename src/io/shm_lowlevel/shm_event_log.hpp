@@ -16,11 +16,11 @@ enum class ShmEventKind { FrameRejected, Latched, Refused, CommandTimedOut, Comm
 
 struct ShmEvent {
   ShmEventKind kind = ShmEventKind::FrameRejected;
-  double time_s = 0.0;          // robot time
-  ShmCommandCheck check;        // FrameRejected
-  const char* holder = nullptr; // Refused: who has the robot (a string literal of the arbiter or a source)
-  int missed_cycles = 0;        // CommandTimedOut
-  double damping_kd = 0.0;      // CommandTimedOut
+  double time_s = 0.0;           // robot time
+  ShmCommandCheck check;         // FrameRejected
+  const char* holder = nullptr;  // Refused: who has the robot (a string literal of the arbiter or a source)
+  int missed_cycles = 0;         // CommandTimedOut
+  double damping_kd = 0.0;       // CommandTimedOut
 };
 
 class ShmEventLog {

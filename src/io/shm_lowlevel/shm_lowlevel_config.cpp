@@ -9,8 +9,8 @@ std::string shm_imu_object_name(const std::string& name_prefix) { return "/" + n
 std::string shm_name_prefix_problem(const std::string& name_prefix) {
   if (name_prefix.size() > 64) return "is longer than 64 characters";
   for (const char c : name_prefix) {
-    const bool allowed = (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' ||
-                         c == '-' || c == '.';
+    const bool allowed =
+        (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
     if (!allowed) return std::string("contains '") + c + "' (accepted: letters, digits, '_', '-', '.')";
   }
   return {};

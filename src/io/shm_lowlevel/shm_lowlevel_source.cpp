@@ -9,9 +9,10 @@
 namespace cerebellum {
 namespace {
 
-constexpr std::size_t kStateFlagsOffset = offsetof(spline_data_t, state) + offsetof(spline_state_data_t, consumer_flags);
-constexpr std::size_t kCommandFlagOffset =
-    offsetof(spline_data_t, cmd) + offsetof(spline_cmd_data_t, consumer_flags) + sizeof(std::uint32_t) * CONSUMER_CONTROL;
+constexpr std::size_t kStateFlagsOffset =
+    offsetof(spline_data_t, state) + offsetof(spline_state_data_t, consumer_flags);
+constexpr std::size_t kCommandFlagOffset = offsetof(spline_data_t, cmd) + offsetof(spline_cmd_data_t, consumer_flags) +
+                                           sizeof(std::uint32_t) * CONSUMER_CONTROL;
 static_assert(kStateFlagsOffset % alignof(std::uint32_t) == 0 && kCommandFlagOffset % alignof(std::uint32_t) == 0);
 static_assert(offsetof(nav_imu_t, timestamp) % alignof(std::size_t) == 0);
 
@@ -137,8 +138,8 @@ void ShmLowLevelSource::publish_state(const SensorFrame& frame) {
   std::atomic_thread_fence(std::memory_order_release);
   std::memcpy(spline()->state.legs, state_legs_, sizeof(state_legs_));
   constexpr std::size_t kImuBodyOffset = offsetof(nav_imu_t, acc);
-  std::memcpy(reinterpret_cast<char*>(imu()) + kImuBodyOffset, reinterpret_cast<const char*>(&imu_frame_) + kImuBodyOffset,
-              sizeof(nav_imu_t) - kImuBodyOffset);
+  std::memcpy(reinterpret_cast<char*>(imu()) + kImuBodyOffset,
+              reinterpret_cast<const char*>(&imu_frame_) + kImuBodyOffset, sizeof(nav_imu_t) - kImuBodyOffset);
   imu_timestamp().store(imu_frame_.timestamp, std::memory_order_release);
   state_flag(CONSUMER_CONTROL).store(1, std::memory_order_release);
   state_flag(CONSUMER_OTHER).store(1, std::memory_order_release);

@@ -83,10 +83,10 @@ class ShmLowLevelSource final : public LowLevelSource, public SubstepParticipant
   // loop thread only
   bool latched_ = false;
   bool command_active_ = false;
-  bool timed_out_ = false;        // the last command was dropped; the next valid frame resumes
-  bool refusal_reported_ = false; // one log line per refused stretch of frames
+  bool timed_out_ = false;         // the last command was dropped; the next valid frame resumes
+  bool refusal_reported_ = false;  // one log line per refused stretch of frames
   int missed_in_row_ = 0;
-  double last_time_s_ = 0.0;     // robot time of the newest frame, for log lines
+  double last_time_s_ = 0.0;  // robot time of the newest frame, for log lines
   JointCommand active_{};
   JointCommand decoded_{};
   leg_control_t command_legs_[kNumLegs]{};

@@ -54,7 +54,8 @@ ShmRegion::ShmRegion(std::string name, std::size_t size_bytes, unsigned mode)
   // the lock lives as long as the descriptor: a second MC on the same names stops here instead
   // of zeroing the objects under the first one (clients never lock)
   if (::flock(fd, LOCK_EX | LOCK_NB) != 0) {
-    throw std::runtime_error("shared memory " + name_ + ": already served by another running MC; choose another "
+    throw std::runtime_error("shared memory " + name_ +
+                             ": already served by another running MC; choose another "
                              "shm.name_prefix");
   }
   // from here on the object is ours: remove it again when it cannot be set up

@@ -13,7 +13,7 @@
 namespace cerebellum {
 
 struct StampedFrame {
-  JointCommand command;  // SDK joint convention
+  JointCommand command;     // SDK joint convention
   double received_s = 0.0;  // robot time of arrival
 };
 

@@ -77,7 +77,8 @@ void MotorSdkSource::take_frame(const StampedFrame& stamped, const RobotState& s
 
   if (status_.err_flag & kMotorSdkCommandLost) {
     // only a live stream of all-zero frames, after the robot has had time to lie down, clears it
-    const bool lain_long_enough = stamped.received_s - lost_since_s_ >= parameters_.lie_before_clear_s - kTimeToleranceS;
+    const bool lain_long_enough =
+        stamped.received_s - lost_since_s_ >= parameters_.lie_before_clear_s - kTimeToleranceS;
     if (follows_closely && lain_long_enough && is_all_zero_frame(frame, parameters_.zero_tolerance)) {
       set_err_bits(kMotorSdkCommandLost, false);
       active_ = passive_command();

@@ -31,13 +31,13 @@ struct MotorSdkStatus {
 
 // running totals, readable from any thread
 struct MotorSdkCounters {
-  std::uint64_t frames_accepted = 0;    // entered the mailbox
-  std::uint64_t frames_non_finite = 0;  // rejected: NaN/Inf
-  std::uint64_t frames_dropped = 0;     // rejected: mailbox full
-  std::uint64_t frames_refused = 0;     // arrived while another source or the MC's state held the robot
+  std::uint64_t frames_accepted = 0;            // entered the mailbox
+  std::uint64_t frames_non_finite = 0;          // rejected: NaN/Inf
+  std::uint64_t frames_dropped = 0;             // rejected: mailbox full
+  std::uint64_t frames_refused = 0;             // arrived while another source or the MC's state held the robot
   std::uint64_t frames_ignored_while_lost = 0;  // non-zero frames while bit1 was set
-  std::uint64_t commands_lost = 0;      // times bit1 was raised by a timeout
-  std::uint64_t clamped_gains = 0;      // joint-frames with kp or kd clamped
+  std::uint64_t commands_lost = 0;              // times bit1 was raised by a timeout
+  std::uint64_t clamped_gains = 0;              // joint-frames with kp or kd clamped
   std::uint64_t clamped_velocities = 0;
   std::uint64_t clamped_torques = 0;
   std::uint64_t clamped_positions = 0;  // q_des pulled inside the joint limits
@@ -76,10 +76,10 @@ class MotorSdkSource final : public LowLevelSource {
   MotorSdkParameters parameters_;
   MotorSdkMailbox mailbox_;
   MotorSdkStatus status_;
-  JointCommand active_{};        // the last accepted frame after the clamps (SDK convention)
+  JointCommand active_{};  // the last accepted frame after the clamps (SDK convention)
   bool has_frame_ = false;
-  double last_frame_s_ = 0.0;    // robot time of the newest frame
-  double lost_since_s_ = 0.0;    // robot time bit1 was raised
+  double last_frame_s_ = 0.0;  // robot time of the newest frame
+  double lost_since_s_ = 0.0;  // robot time bit1 was raised
   std::atomic<const char*> refusal_holder_{nullptr};
   std::atomic<std::uint64_t> refused_{0};
   std::atomic<std::uint64_t> ignored_while_lost_{0};

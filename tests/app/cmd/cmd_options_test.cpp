@@ -48,8 +48,8 @@ TEST(CmdOptions, StandLieAndDampAreTheirModeAndGait) {
 }
 
 TEST(CmdOptions, PoseIsQpStandWithAbsoluteRollPitchAndHeight) {
-  const CmdOptions pose =
-      parse_cmd_options({"pose", "--roll", "0.1", "--pitch", "-0.2", "--yaw", "0.3", "--height", "0.3", "--duration", "1.5"});
+  const CmdOptions pose = parse_cmd_options(
+      {"pose", "--roll", "0.1", "--pitch", "-0.2", "--yaw", "0.3", "--height", "0.3", "--duration", "1.5"});
   EXPECT_EQ(pose.command.mode, 3);
   EXPECT_EQ(pose.command.gait_id, 0);
   EXPECT_FLOAT_EQ(pose.command.rpy_des[0], 0.1f);
@@ -86,7 +86,8 @@ TEST(CmdOptions, WalkDefaultsToSlowTrotAndTakesTheGaitsLimits) {
   EXPECT_EQ(fast.command.duration, 3000);
   EXPECT_EQ(cmd_error({"walk", "--vx", "-1.6", "--gait", "10"}),
             "cmd walk: --vx must be a number in [-1.2, 1.6] m/s (gait 10), got '-1.6'");
-  EXPECT_EQ(cmd_error({"walk", "--vx", "0.7"}), "cmd walk: --vx must be a number in [-0.6, 0.6] m/s (gait 27), got '0.7'");
+  EXPECT_EQ(cmd_error({"walk", "--vx", "0.7"}),
+            "cmd walk: --vx must be a number in [-0.6, 0.6] m/s (gait 27), got '0.7'");
   EXPECT_EQ(cmd_error({"walk", "--vy", "0.2", "--gait", "2", "--yaw-rate", "0.6"}),
             "cmd walk: --vy must be a number in [-0.15, 0.15] m/s (gait 2), got '0.2'");
   EXPECT_EQ(cmd_error({"walk", "--gait", "5"}), "cmd walk: --gait must be one of 2, 3, 4, 7, 10, 26, 27, got 5");
@@ -95,10 +96,31 @@ TEST(CmdOptions, WalkDefaultsToSlowTrotAndTakesTheGaitsLimits) {
 }
 
 TEST(CmdOptions, RawSetsEveryField) {
-  const CmdOptions raw = parse_cmd_options({"raw", "--mode", "62", "--gait", "3", "--contact", "14", "--value", "2",
-                                            "--duration", "1.3", "--vel", "0.1,0.2,0.3", "--rpy", "0,0.1,0",
-                                            "--pos", "0,0,0.2", "--acc", "1,2,3,4,5,6", "--ctrl-point", "0.01,0,0",
-                                            "--foot-pose", "0,0,0.05,0,0,0", "--step-height", "0.04,0.05"});
+  const CmdOptions raw = parse_cmd_options({"raw",
+                                            "--mode",
+                                            "62",
+                                            "--gait",
+                                            "3",
+                                            "--contact",
+                                            "14",
+                                            "--value",
+                                            "2",
+                                            "--duration",
+                                            "1.3",
+                                            "--vel",
+                                            "0.1,0.2,0.3",
+                                            "--rpy",
+                                            "0,0.1,0",
+                                            "--pos",
+                                            "0,0,0.2",
+                                            "--acc",
+                                            "1,2,3,4,5,6",
+                                            "--ctrl-point",
+                                            "0.01,0,0",
+                                            "--foot-pose",
+                                            "0,0,0.05,0,0,0",
+                                            "--step-height",
+                                            "0.04,0.05"});
   const robot_control_cmd_lcmt& c = raw.command;
   EXPECT_EQ(c.mode, 62);
   EXPECT_EQ(c.gait_id, 3);
@@ -118,7 +140,8 @@ TEST(CmdOptions, RawSetsEveryField) {
 
 TEST(CmdOptions, ErrorsNameTheOptionAndTheRange) {
   EXPECT_EQ(cmd_error({"pose", "--roll", "0.6"}), "cmd pose: --roll must be a number in [-0.52, 0.52] rad, got '0.6'");
-  EXPECT_EQ(cmd_error({"pose", "--pitch", "-0.3"}), "cmd pose: --pitch must be a number in [-0.25, 0.3] rad, got '-0.3'");
+  EXPECT_EQ(cmd_error({"pose", "--pitch", "-0.3"}),
+            "cmd pose: --pitch must be a number in [-0.25, 0.3] rad, got '-0.3'");
   EXPECT_EQ(cmd_error({"pose", "--height", "abc"}), "cmd pose: --height must be a number in [0.15, 0.32] m, got 'abc'");
   EXPECT_EQ(cmd_error({"height", "0.3"}), "cmd height: H must be a number in [0.15, 0.27] m, got '0.3'");
   EXPECT_EQ(cmd_error({"height"}), "cmd height: needs the height H in m, e.g. 'cmd height 0.22'");
@@ -137,8 +160,8 @@ TEST(CmdOptions, ErrorsNameTheOptionAndTheRange) {
   EXPECT_EQ(cmd_error({"stand", "--ttl", "256"}), "cmd stand: --ttl must be an integer in [0, 255], got '256'");
   EXPECT_EQ(cmd_error({"stand", "--timeout", "0"}), "cmd stand: --timeout must be a number in [0.1, 3600] s, got '0'");
   EXPECT_EQ(cmd_error({"stand", "--hold", "-1"}), "cmd stand: --hold must be a number in [0, 1000000] s, got '-1'");
-  EXPECT_EQ(cmd_error({"fly"}).rfind("cmd: unknown verb 'fly' (accepted: damp, height, lie, pose, raw, stand, walk)", 0),
-            0u);
+  EXPECT_EQ(
+      cmd_error({"fly"}).rfind("cmd: unknown verb 'fly' (accepted: damp, height, lie, pose, raw, stand, walk)", 0), 0u);
   EXPECT_EQ(cmd_error({}).rfind("cmd: missing verb", 0), 0u);
 }
 
@@ -160,7 +183,8 @@ TEST(StatusOptions, CountRateTimeoutTtl) {
   EXPECT_EQ(options.ttl, 0);
   EXPECT_EQ(status_error({"--count", "0"}), "status: --count must be an integer in [1, 1000000000], got '0'");
   EXPECT_EQ(status_error({"--rate", "100"}), "status: --rate must be a number in [0.1, 50] Hz, got '100'");
-  EXPECT_EQ(status_error({"--speed", "1"}), "status: unknown option '--speed' (accepted: --count, --rate, --timeout, --ttl)");
+  EXPECT_EQ(status_error({"--speed", "1"}),
+            "status: unknown option '--speed' (accepted: --count, --rate, --timeout, --ttl)");
 }
 
 TEST(HighLevelUrl, InterfaceGroupWithPortAndTtl) {

@@ -167,7 +167,8 @@ class Recording {
     while (Clock::now() < deadline) {
       for (int port : kPorts) publisher.publish(port, kProbe, {0, 0, 0, 0, 0, 0, 0, 0});
       std::this_thread::sleep_for(std::chrono::milliseconds(50));
-      if (std::all_of(kPorts.begin(), kPorts.end(), [&](int port) { return count_channel(events(port), kProbe) > 0; })) {
+      if (std::all_of(kPorts.begin(), kPorts.end(),
+                      [&](int port) { return count_channel(events(port), kProbe) > 0; })) {
         return true;
       }
     }
@@ -235,7 +236,8 @@ TEST(LcmLogTools, LogKeepsEachChannelOnceInItsPortsFile) {
       }
       ++expected;
       ASSERT_EQ(count_channel(events, c.channel), 1u) << c.channel;
-      const auto event = std::find_if(events.begin(), events.end(), [&](const auto& e) { return e.channel == c.channel; });
+      const auto event =
+          std::find_if(events.begin(), events.end(), [&](const auto& e) { return e.channel == c.channel; });
       EXPECT_EQ(event->data, c.bytes) << c.channel;
     }
     EXPECT_EQ(events.size() - count_channel(events, kProbe), expected) << "port " << port;

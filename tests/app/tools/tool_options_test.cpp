@@ -87,8 +87,9 @@ TEST(LogToolOptions, LogParsesPrefixPortsAndForce) {
   EXPECT_EQ(o.prefix, "runs/walk");
   EXPECT_EQ(o.ports, (std::vector<int>{7670, 7671}));
   EXPECT_TRUE(o.force);
-  EXPECT_NE(error_of(parse_log_options, {"--port", "1234"}).find("--port: must be one of the interface ports 7667, "
-                                                                 "7669, 7670, 7671, got 1234"),
+  EXPECT_NE(error_of(parse_log_options, {"--port", "1234"})
+                .find("--port: must be one of the interface ports 7667, "
+                      "7669, 7670, 7671, got 1234"),
             std::string::npos);
   EXPECT_NE(error_of(parse_log_options, {"a", "b"}).find("one file prefix only"), std::string::npos);
   EXPECT_NE(error_of(parse_log_options, {"--ttl", "1"}).find("unknown option '--ttl'"), std::string::npos);

@@ -20,8 +20,11 @@ std::string sim(const std::string& arguments) { return quoted(kProgram) + " sim 
 
 // "width,height,frames" of the first video stream
 std::string probe_video(const std::string& path) {
-  return run_command("ffprobe -v error -count_frames -select_streams v:0 -show_entries "
-                     "stream=width,height,nb_read_frames -of csv=p=0 " + quoted(path)).output;
+  return run_command(
+             "ffprobe -v error -count_frames -select_streams v:0 -show_entries "
+             "stream=width,height,nb_read_frames -of csv=p=0 " +
+             quoted(path))
+      .output;
 }
 
 std::vector<std::vector<std::string>> read_csv(const std::string& path) {
@@ -41,11 +44,12 @@ std::vector<std::vector<std::string>> read_csv(const std::string& path) {
 TEST(ToolsCli, LockstepRecordingRendersEveryFrameOfADecodableVideo) {
   test::ScratchDir dir;
   const std::string video = dir / "stand.mp4";
-  const auto run = run_command(sim("--speed max --duration 2 --record " + quoted(video) +
-                                   " --record-fps 10 --record-size 320x240"));
+  const auto run =
+      run_command(sim("--speed max --duration 2 --record " + quoted(video) + " --record-fps 10 --record-size 320x240"));
   ASSERT_EQ(run.exit_code, 0) << run.output;
-  EXPECT_NE(run.output.find("video: 20 frames at 10 fps (0 repeated because rendering fell behind) written to " + video),
-            std::string::npos)
+  EXPECT_NE(
+      run.output.find("video: 20 frames at 10 fps (0 repeated because rendering fell behind) written to " + video),
+      std::string::npos)
       << run.output;
   EXPECT_EQ(probe_video(video), "320,240,20\n");
   // the first frame shows the scene (floor, robot, text), not an empty buffer
@@ -57,12 +61,11 @@ TEST(ToolsCli, LockstepRecordingRendersEveryFrameOfADecodableVideo) {
 TEST(ToolsCli, PacedRecordingKeepsOneFramePerPeriodOfRobotTime) {
   test::ScratchDir dir;
   const std::string video = dir / "paced.mkv";
-  const auto run = run_command(sim("--speed 2 --duration 1 --record " + quoted(video) +
-                                   " --record-fps 20 --record-size 320x240"));
+  const auto run =
+      run_command(sim("--speed 2 --duration 1 --record " + quoted(video) + " --record-fps 20 --record-size 320x240"));
   ASSERT_EQ(run.exit_code, 0) << run.output;
   // however many frames rendering skipped and repeated, the count and so the timing is exact
-  EXPECT_TRUE(std::regex_search(run.output, std::regex("video: 20 frames at 20 fps \\([0-9]+ repeated")))
-      << run.output;
+  EXPECT_TRUE(std::regex_search(run.output, std::regex("video: 20 frames at 20 fps \\([0-9]+ repeated"))) << run.output;
   EXPECT_EQ(probe_video(video), "320,240,20\n");
 }
 
@@ -142,7 +145,8 @@ TEST(ToolsCli, ViewerWithoutADisplaySaysHowToGetOne) {
 
 TEST(ToolsCli, RecorderWithoutFfmpegFailsBeforeTheRun) {
   test::ScratchDir dir;
-  const auto run = run_command("env PATH=/nonexistent-directory " + sim("--duration 0.1 --record " + quoted(dir / "a.mp4")));
+  const auto run =
+      run_command("env PATH=/nonexistent-directory " + sim("--duration 0.1 --record " + quoted(dir / "a.mp4")));
   EXPECT_EQ(run.exit_code, 1);
   EXPECT_NE(run.output.find("cerebellum sim: ffmpeg not found on PATH (Debian package: ffmpeg)"), std::string::npos)
       << run.output;

@@ -16,8 +16,8 @@ namespace {
 using StateVector = Eigen::Matrix<double, kSrbStates, 1>;
 
 std::array<Eigen::Vector3d, kNumLegs> standing_feet() {
-  return {Eigen::Vector3d(0.18, -0.13, -0.25), Eigen::Vector3d(0.18, 0.13, -0.25),
-          Eigen::Vector3d(-0.15, -0.13, -0.25), Eigen::Vector3d(-0.15, 0.13, -0.25)};
+  return {Eigen::Vector3d(0.18, -0.13, -0.25), Eigen::Vector3d(0.18, 0.13, -0.25), Eigen::Vector3d(-0.15, -0.13, -0.25),
+          Eigen::Vector3d(-0.15, 0.13, -0.25)};
 }
 
 // a robot at rest at height 0.25 asked to stay (or move at vx_ref)

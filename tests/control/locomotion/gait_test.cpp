@@ -70,7 +70,8 @@ TEST(Gait, PhasesAdvanceThroughStanceAndSwing) {
 }
 
 TEST(Gait, StandsDoNotStepAndTheBridgeKeepsEveryFootDown) {
-  for (const GaitSpec& gait : kGaitTable) EXPECT_EQ(steps(*gait_pattern(gait.id)), gait.kind != GaitKind::Stand) << gait.id;
+  for (const GaitSpec& gait : kGaitTable)
+    EXPECT_EQ(steps(*gait_pattern(gait.id)), gait.kind != GaitKind::Stand) << gait.id;
   const GaitPattern bridge = stand_bridge_pattern(2);
   EXPECT_FALSE(steps(bridge));
   GaitScheduler scheduler(0.03);

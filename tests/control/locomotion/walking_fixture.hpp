@@ -60,8 +60,7 @@ inline LocomotionTarget walk_command(int gait, double vx, double vy = 0.0, doubl
 
 struct WalkingSim {
   explicit WalkingSim(std::unique_ptr<qp::QpSolver> solver = std::make_unique<qp::GoldfarbIdnaniSolver>())
-      : backend(config()), controller(std::move(solver)),
-        loop(backend, estimator, controller, GuardLimits{}, 0.002) {}
+      : backend(config()), controller(std::move(solver)), loop(backend, estimator, controller, GuardLimits{}, 0.002) {}
 
   static MujocoBackendConfig config() {
     MujocoBackendConfig c;

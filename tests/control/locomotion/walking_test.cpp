@@ -179,9 +179,8 @@ TEST(Walking, PronksSidewaysWithoutRollingOver) {
   sim.controller.set(walk_command(2, 0.0, 0.15));
   double worst_roll = 0.0;
   sim.run_until(kStart);
-  sim.run_until(kStart + 5.0, [&](const CycleRecord& record) {
-    worst_roll = std::max(worst_roll, std::abs(record.state.rpy.x()));
-  });
+  sim.run_until(kStart + 5.0,
+                [&](const CycleRecord& record) { worst_roll = std::max(worst_roll, std::abs(record.state.rpy.x())); });
   EXPECT_TRUE(sim.upright());
   EXPECT_LT(worst_roll, 0.3);
   EXPECT_GT(sim.backend.ground_truth().velocity_world[1], 0.05);

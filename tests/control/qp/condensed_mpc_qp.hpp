@@ -36,9 +36,7 @@ inline StanceSchedule trot_schedule(std::size_t horizon, std::size_t half_period
   return s;
 }
 
-inline StanceSchedule stand_schedule(std::size_t horizon) {
-  return StanceSchedule(horizon, {true, true, true, true});
-}
+inline StanceSchedule stand_schedule(std::size_t horizon) { return StanceSchedule(horizon, {true, true, true, true}); }
 
 inline Eigen::Matrix3d cross_matrix(const Eigen::Vector3d& r) {
   Eigen::Matrix3d m;
@@ -61,8 +59,7 @@ inline std::array<Eigen::Vector3d, 4> jittered_feet(std::mt19937& rng) {
 }
 
 // appends the 5 friction-pyramid rows of one foot whose force starts at variable `col`
-inline void add_friction_rows(QpProblem& p, Eigen::Index& row, Eigen::Index col,
-                              const ForceLimits& limits) {
+inline void add_friction_rows(QpProblem& p, Eigen::Index& row, Eigen::Index col, const ForceLimits& limits) {
   constexpr double inf = std::numeric_limits<double>::infinity();
   const double mu = limits.mu;
   // +-fx - mu fz <= 0, +-fy - mu fz <= 0, 0 <= fz <= fz_max
@@ -84,14 +81,13 @@ inline void add_friction_rows(QpProblem& p, Eigen::Index& row, Eigen::Index col,
 // first-order discretisation), cost sum |x_k - x_ref|_L^2 + alpha |u|^2 with the reference
 // weights; only stance-foot forces are variables. The feet are randomised, and so is x0 when
 // `disturbed`.
-inline QpProblem make_condensed_mpc_qp(const StanceSchedule& stance, std::mt19937& rng,
-                                       const ForceLimits& limits = {}, bool disturbed = true) {
+inline QpProblem make_condensed_mpc_qp(const StanceSchedule& stance, std::mt19937& rng, const ForceLimits& limits = {},
+                                       bool disturbed = true) {
   using StateMatrix = Eigen::Matrix<double, kMpcStates, kMpcStates>;
   const std::size_t horizon = stance.size();
   const double dt_s = 0.03;
   const double alpha = 4e-5;
-  const std::array<double, kMpcStates> weights{0.25, 0.25, 10,  2,   2,   50, 0,
-                                               0,    0.3,  0.2, 0.2, 0.1, 0};
+  const std::array<double, kMpcStates> weights{0.25, 0.25, 10, 2, 2, 50, 0, 0, 0.3, 0.2, 0.2, 0.1, 0};
   std::uniform_real_distribution<double> yaw_rad(-0.5, 0.5);
   const double yaw = yaw_rad(rng);
   const Eigen::Matrix3d rz = Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix();
@@ -161,8 +157,8 @@ inline QpProblem make_condensed_mpc_qp(const StanceSchedule& stance, std::mt1993
     ref(12) = kGravity;
     x_ref.segment<kMpcStates>(state_row(k)) = ref;
   }
-  const Eigen::VectorXd l_diag = Eigen::Matrix<double, kMpcStates, 1>(weights.data())
-                                     .replicate(static_cast<Eigen::Index>(horizon), 1);
+  const Eigen::VectorXd l_diag =
+      Eigen::Matrix<double, kMpcStates, 1>(weights.data()).replicate(static_cast<Eigen::Index>(horizon), 1);
 
   QpProblem p;
   p.resize({n, 0, 5 * n / 3});
@@ -186,16 +182,15 @@ inline QpProblem make_balance_qp(std::mt19937& rng, const ForceLimits& limits = 
     a.block<3, 3>(3, col) = cross_matrix(feet[leg]);
   }
   Eigen::Matrix<double, 6, 1> wrench;
-  wrench << 25.0 * small(rng), 25.0 * small(rng), robot::kMpcMassKg * kGravity + 20.0 * small(rng),
-      8.0 * small(rng), 8.0 * small(rng), 4.0 * small(rng);
+  wrench << 25.0 * small(rng), 25.0 * small(rng), robot::kMpcMassKg * kGravity + 20.0 * small(rng), 8.0 * small(rng),
+      8.0 * small(rng), 4.0 * small(rng);
   Eigen::Matrix<double, 6, 1> s_diag;
   s_diag << 1.0, 1.0, 10.0, 20.0, 20.0, 10.0;
   const double alpha = 1e-3;
 
   QpProblem p;
   p.resize({12, 0, 20});
-  p.hessian = 2.0 * (a.transpose() * s_diag.asDiagonal() * a +
-                     alpha * Eigen::Matrix<double, 12, 12>::Identity());
+  p.hessian = 2.0 * (a.transpose() * s_diag.asDiagonal() * a + alpha * Eigen::Matrix<double, 12, 12>::Identity());
   p.linear = -2.0 * a.transpose() * s_diag.asDiagonal() * wrench;
   Eigen::Index row = 0;
   for (Eigen::Index col = 0; col < 12; col += 3) add_friction_rows(p, row, col, limits);

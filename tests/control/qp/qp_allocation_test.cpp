@@ -33,8 +33,7 @@ TEST(QpAllocation, SameSizedMpcSolvesDoNotAllocate) {
   const auto schedule = fixtures::stand_schedule(10);
   GoldfarbIdnaniSolver solver(fixtures::make_condensed_mpc_qp(schedule, rng).dimensions());
   QpSolution solution;
-  ASSERT_EQ(solver.solve(fixtures::make_condensed_mpc_qp(schedule, rng), solution),
-            QpStatus::Solved);
+  ASSERT_EQ(solver.solve(fixtures::make_condensed_mpc_qp(schedule, rng), solution), QpStatus::Solved);
   int iterations = 0;
   for (int trial = 0; trial < 5; ++trial) {
     const QpProblem p = fixtures::make_condensed_mpc_qp(schedule, rng);

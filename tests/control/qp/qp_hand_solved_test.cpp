@@ -135,11 +135,9 @@ TEST_P(QpHandSolved, BoxCornerWithScaledHessian) {
 }
 
 INSTANTIATE_TEST_SUITE_P(BothSolvers, QpHandSolved,
-                         ::testing::Values(QpSolverKind::GoldfarbIdnani, QpSolverKind::Alglib),
-                         [](const auto& info) {
-                           return info.param == QpSolverKind::GoldfarbIdnani
-                                      ? std::string("GoldfarbIdnani")
-                                      : std::string("Alglib");
+                         ::testing::Values(QpSolverKind::GoldfarbIdnani, QpSolverKind::Alglib), [](const auto& info) {
+                           return info.param == QpSolverKind::GoldfarbIdnani ? std::string("GoldfarbIdnani")
+                                                                             : std::string("Alglib");
                          });
 
 TEST(QpSolverFactory, NamesSelectTheSolver) {

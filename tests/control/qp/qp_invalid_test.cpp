@@ -128,12 +128,10 @@ TEST_P(QpInvalid, IndefiniteOrSingularHessianIsNotConvex) {
   EXPECT_EQ(solve_with(GetParam(), negative), QpStatus::NotConvex);
 }
 
-INSTANTIATE_TEST_SUITE_P(BothSolvers, QpInvalid,
-                         ::testing::Values(QpSolverKind::GoldfarbIdnani, QpSolverKind::Alglib),
+INSTANTIATE_TEST_SUITE_P(BothSolvers, QpInvalid, ::testing::Values(QpSolverKind::GoldfarbIdnani, QpSolverKind::Alglib),
                          [](const auto& info) {
-                           return info.param == QpSolverKind::GoldfarbIdnani
-                                      ? std::string("GoldfarbIdnani")
-                                      : std::string("Alglib");
+                           return info.param == QpSolverKind::GoldfarbIdnani ? std::string("GoldfarbIdnani")
+                                                                             : std::string("Alglib");
                          });
 
 TEST(QpGoldfarbIdnani, RedundantConsistentEqualitiesAreSolved) {

@@ -21,8 +21,7 @@ struct KktResiduals {
 
 inline KktResiduals kkt_residuals(const QpProblem& p, const QpSolution& s) {
   KktResiduals r;
-  const Eigen::VectorXd gradient = p.hessian * s.x + p.linear +
-                                   p.eq_matrix.transpose() * s.eq_multipliers +
+  const Eigen::VectorXd gradient = p.hessian * s.x + p.linear + p.eq_matrix.transpose() * s.eq_multipliers +
                                    p.ineq_matrix.transpose() * s.ineq_multipliers;
   r.stationarity = gradient.size() > 0 ? gradient.cwiseAbs().maxCoeff() : 0.0;
 

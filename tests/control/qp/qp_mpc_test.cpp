@@ -70,8 +70,7 @@ TEST(QpMpc, BodyAtRestOnItsReferenceIsHeldByItsWeight) {
   QpSolution solution;
   const double weight_n = robot::kMpcMassKg * fixtures::kGravity;
   for (int trial = 0; trial < 5; ++trial) {
-    const QpProblem p =
-        fixtures::make_condensed_mpc_qp(fixtures::stand_schedule(10), rng, {}, false);
+    const QpProblem p = fixtures::make_condensed_mpc_qp(fixtures::stand_schedule(10), rng, {}, false);
     ASSERT_EQ(solver.solve(p, solution), QpStatus::Solved);
     expect_kkt(p, solution);
     for (Eigen::Index step = 0; step < 5; ++step) {

@@ -15,7 +15,11 @@ TEST(AdapterThread, RepeatsItsStepUntilStoppedThenDrainsOnce) {
   int steps_at_drain = -1;
   {
     AdapterThread thread;
-    thread.start([&] { ++steps; }, [&] { steps_at_drain = steps.load(); ++drains; });
+    thread.start([&] { ++steps; },
+                 [&] {
+                   steps_at_drain = steps.load();
+                   ++drains;
+                 });
     while (steps.load() < 3) std::this_thread::yield();
     thread.stop();
     EXPECT_FALSE(thread.running());

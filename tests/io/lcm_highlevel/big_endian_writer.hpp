@@ -40,8 +40,8 @@ inline constexpr std::uint64_t kDangerStatesHash = 0x3833e1f8ac8e5548ull;
 
 // a robot_control_cmd whose float fields count up from first_float in steps of 0.25
 inline std::vector<std::uint8_t> robot_control_cmd_packet(std::int8_t mode, std::int8_t gait_id, std::int8_t contact,
-                                                          std::int8_t life_count, float first_float,
-                                                          std::int32_t value, std::int32_t duration) {
+                                                          std::int8_t life_count, float first_float, std::int32_t value,
+                                                          std::int32_t duration) {
   BigEndianWriter w;
   w.u64(kRobotControlCmdHash).i8(mode).i8(gait_id).i8(contact).i8(life_count);
   // vel_des[3], rpy_des[3], pos_des[3], acc_des[6], ctrl_point[3], foot_pose[6], step_height[2]

@@ -58,10 +58,10 @@ TEST_F(HighLevelConfigFile, DefaultsAreOffWithTheInterfaceUrls) {
 }
 
 TEST_F(HighLevelConfigFile, EveryKeyIsRead) {
-  const McConfig config = load_config(write(
-      "highlevel:\n  enabled: true\n  command_url: udpm://239.255.76.67:7671?ttl=0\n"
-      "  response_url: udpm://239.255.76.67:7670?ttl=0\n  odometry_url: udpm://239.255.76.67:7667?ttl=0\n"
-      "  response_keepalive_s: 0\n"));
+  const McConfig config = load_config(
+      write("highlevel:\n  enabled: true\n  command_url: udpm://239.255.76.67:7671?ttl=0\n"
+            "  response_url: udpm://239.255.76.67:7670?ttl=0\n  odometry_url: udpm://239.255.76.67:7667?ttl=0\n"
+            "  response_keepalive_s: 0\n"));
   EXPECT_TRUE(config.highlevel.enabled);
   EXPECT_EQ(config.highlevel.command_url, "udpm://239.255.76.67:7671?ttl=0");
   EXPECT_EQ(config.highlevel.response_url, "udpm://239.255.76.67:7670?ttl=0");
@@ -76,8 +76,9 @@ TEST_F(HighLevelConfigFile, BadValuesNameTheKey) {
   EXPECT_NE(error_of("highlevel:\n  response_url: udpm://10.0.0.1:7670\n")
                 .find("highlevel.response_url '10.0.0.1' is not a multicast group"),
             std::string::npos);
-  EXPECT_NE(error_of("highlevel:\n  response_keepalive_s: 0.5\n").find("highlevel.response_keepalive_s must be in [0, 0.19]"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of("highlevel:\n  response_keepalive_s: 0.5\n").find("highlevel.response_keepalive_s must be in [0, 0.19]"),
+      std::string::npos);
 }
 
 }  // namespace

@@ -42,7 +42,9 @@ McConfig lockstep_config(double keepalive_s) {
 class HighLevelLockstep : public ::testing::Test {
  protected:
   explicit HighLevelLockstep(double keepalive_s = 0.0)
-      : config_(lockstep_config(keepalive_s)), log_(std::tmpfile()), mc_(make_simulated_mc(config_)),
+      : config_(lockstep_config(keepalive_s)),
+        log_(std::tmpfile()),
+        mc_(make_simulated_mc(config_)),
         adapter_(mc_.machine(), config_.highlevel, config_.loop_period_s, log_) {
     mc_.loop().add_observer(adapter_);
   }
@@ -223,14 +225,14 @@ TEST_F(HighLevelLockstep, MalformedPacketsAreCountedAndLogged) {
   EXPECT_EQ(status().mode, 7);
   tick(20);
   EXPECT_EQ(adapter_.counters().responses_published, 3u);  // ticks 0, 10, 20
-  EXPECT_TRUE(eventually([&] { return log_text().find("robot_control_cmd packets rejected in the last second") !=
-                                      std::string::npos; }, 3.0))
+  EXPECT_TRUE(eventually(
+      [&] { return log_text().find("robot_control_cmd packets rejected in the last second") != std::string::npos; },
+      3.0))
       << log_text();
 }
 
 TEST_F(HighLevelLockstep, NineTimedStepsPushedAtOnceAllRunInOrder) {
-  const std::vector<std::pair<int, int>> steps{{7, 0}, {0, 0}, {7, 0}, {0, 0}, {7, 1},
-                                               {0, 0}, {7, 0}, {0, 0}, {7, 0}};
+  const std::vector<std::pair<int, int>> steps{{7, 0}, {0, 0}, {7, 0}, {0, 0}, {7, 1}, {0, 0}, {7, 0}, {0, 0}, {7, 0}};
   tick(1);
   for (std::size_t i = 0; i < steps.size(); ++i) {
     peer_.publish_command(command(steps[i].first, steps[i].second, static_cast<int>(i) + 1, 100));
@@ -258,8 +260,8 @@ TEST_F(HighLevelLockstep, NineTimedStepsPushedAtOnceAllRunInOrder) {
   const std::vector<robot_control_response_lcmt> responses = peer_.responses();
   ASSERT_FALSE(responses.empty());
   EXPECT_EQ(responses.back().switch_status, 5);
-  EXPECT_TRUE(eventually([&] { return log_text().find("refused mode 21 gait 3 while in mode 7") != std::string::npos; },
-                         3.0))
+  EXPECT_TRUE(
+      eventually([&] { return log_text().find("refused mode 21 gait 3 while in mode 7") != std::string::npos; }, 3.0))
       << log_text();
 }
 
@@ -276,7 +278,8 @@ TEST_F(HighLevelLockstep, UserGaitFilesAreAnsweredAndStored) {
   ASSERT_TRUE(eventually([&] { return peer_.gait_results().size() == 2; }));
   EXPECT_EQ(peer_.gait_results()[1].result, 1);
 
-  peer_.publish_gait_file(test::file_send_packet("# Gait Params\n[[step]]\nmode = 11\ngait_id = 110\nduration = 300\n"));
+  peer_.publish_gait_file(
+      test::file_send_packet("# Gait Params\n[[step]]\nmode = 11\ngait_id = 110\nduration = 300\n"));
   ASSERT_TRUE(eventually([&] { return peer_.gait_results().size() == 3; }));
   EXPECT_EQ(peer_.gait_results()[2].result, 0);
   ASSERT_TRUE(adapter_.user_gaits().parameters().has_value());

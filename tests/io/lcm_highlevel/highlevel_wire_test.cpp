@@ -29,7 +29,8 @@ TEST(HighLevelWire, CommandFieldsComeFromTheirWirePositions) {
   EXPECT_EQ(c.life_count, -3);
   // the 26 floats in declaration order: 1.0, 1.25, 1.5, ...
   std::vector<float> floats;
-  for (const auto* array : {c.vel_des.data(), c.rpy_des.data(), c.pos_des.data()}) floats.insert(floats.end(), array, array + 3);
+  for (const auto* array : {c.vel_des.data(), c.rpy_des.data(), c.pos_des.data()})
+    floats.insert(floats.end(), array, array + 3);
   floats.insert(floats.end(), c.acc_des.begin(), c.acc_des.end());
   floats.insert(floats.end(), c.ctrl_point.begin(), c.ctrl_point.end());
   floats.insert(floats.end(), c.foot_pose.begin(), c.foot_pose.end());
@@ -87,7 +88,7 @@ TEST(HighLevelWire, FileSendTextWithoutItsNul) {
 TEST(HighLevelWire, MalformedFileSendIsRefused) {
   std::string text = "untouched";
   const Bytes good = test::file_send_packet("abc");
-  EXPECT_EQ(decode_file_send(good.data(), 11, text), WireDecode::Truncated);          // no length
+  EXPECT_EQ(decode_file_send(good.data(), 11, text), WireDecode::Truncated);  // no length
   EXPECT_EQ(decode_file_send(good.data(), good.size() - 1, text), WireDecode::Truncated);
   Bytes longer = good;
   longer.push_back('x');

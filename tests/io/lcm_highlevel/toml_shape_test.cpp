@@ -15,7 +15,8 @@ std::string dotted_key(int parts, const std::string& part = "a") {
 
 TEST(TomlShape, AGaitFileWithHeadersArraysFloatsAndCommentsIsWithinTheLimits) {
   const std::string text =
-      "# Gait Params\n[[step]]\nmode = 11 # walk\nvel_des = [0.1, -2.5e-3, 1.0]\nname = \"a.b.c.d.e.f.g.h.i.j.k.l.m.n.o.p.q\"\n"
+      "# Gait Params\n[[step]]\nmode = 11 # walk\nvel_des = [0.1, -2.5e-3, 1.0]\nname = "
+      "\"a.b.c.d.e.f.g.h.i.j.k.l.m.n.o.p.q\"\n"
       "when = 1979-05-27T07:32:00.999\nnote = '''x.y.z.\n.a.b.c.d.e.f.g.h.i.j.k.l.m.n.o.p'''\n";
   EXPECT_EQ(toml_shape_problem(text), "");
 }

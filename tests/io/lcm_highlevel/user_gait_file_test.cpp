@@ -103,15 +103,16 @@ TEST(UserGaitFile, DefinitionErrorsNameTheSectionAndKey) {
 TEST(UserGaitFile, ParameterErrorsNameTheStepAndKey) {
   const std::string head = "# Gait Params\n[[step]]\nmode = 11\ngait_id = 110\nduration = 100\n[[step]]\n";
   EXPECT_NE(error_of(head + "gait_id = 110\nduration = 100\n").find("step 2: mode is missing"), std::string::npos);
-  EXPECT_NE(error_of(head + "mode = 300\ngait_id = 110\nduration = 100\n").find("step 2: mode must be an integer in [-128, 127]"),
+  EXPECT_NE(error_of(head + "mode = 300\ngait_id = 110\nduration = 100\n")
+                .find("step 2: mode must be an integer in [-128, 127]"),
             std::string::npos);
   EXPECT_NE(error_of(head + "mode = 11\ngait_id = 110\nduration = -5\n").find("step 2: duration"), std::string::npos);
   EXPECT_NE(error_of(head + "mode = 11\ngait_id = 110\nduration = 100\nvel_des = [0.1, 0.0]\n")
                 .find("step 2: vel_des must be a list of 3 finite numbers"),
             std::string::npos);
-  EXPECT_NE(error_of(head + "mode = 11\ngait_id = 110\nduration = 100\nrpy_des = [nan, 0.0, 0.0]\n")
-                .find("step 2: rpy_des"),
-            std::string::npos);
+  EXPECT_NE(
+      error_of(head + "mode = 11\ngait_id = 110\nduration = 100\nrpy_des = [nan, 0.0, 0.0]\n").find("step 2: rpy_des"),
+      std::string::npos);
   EXPECT_NE(error_of(head + "mode = 11\ngait_id = 110\nduration = 100\nstep_height = [-1.0, 0.0]\n")
                 .find("step 2: step_height values must be in [0, 1000000)"),
             std::string::npos);

@@ -293,10 +293,12 @@ TEST(MotorSdkSockets, SimAndExampleProgramStandTheRobotUp) {
   // the sim runs 10 s of robot time at real-time speed; the example outlives it
   const std::string sim_command = "cd " + dir.string() + " && " + CEREBELLUM_EXE +
                                   " sim --speed 1 --duration 10 --config sim.yaml > sim.log 2> sim.err";
-  const std::string example_command = "cd " + dir.string() + " && " + EXAMPLE_MOTOR_CTRL_EXE + " 11.5 > example.log 2>&1";
+  const std::string example_command =
+      "cd " + dir.string() + " && " + EXAMPLE_MOTOR_CTRL_EXE + " 11.5 > example.log 2>&1";
   int sim_status = -1, example_status = -1;
   std::thread sim([&] { sim_status = std::system(sim_command.c_str()); });
-  const bool ready = eventually([&] { return read_file(dir / "sim.log").find("cerebellum ready") != std::string::npos; }, 30.0);
+  const bool ready =
+      eventually([&] { return read_file(dir / "sim.log").find("cerebellum ready") != std::string::npos; }, 30.0);
   std::thread example([&] {
     if (ready) example_status = std::system(example_command.c_str());
   });

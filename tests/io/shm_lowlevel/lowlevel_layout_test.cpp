@@ -11,10 +11,10 @@ namespace {
 
 // sizes built up from the fields, independently of the header's asserts
 constexpr std::size_t kFloat = 4;
-constexpr std::size_t kJointControl = 5 * kFloat;              // p_des v_des kp kd t_ff
-constexpr std::size_t kLegControl = 4 * kJointControl + 4;     // abad hip knee foot + flags
-constexpr std::size_t kCmd = 4 * kLegControl + 2 * 4;          // legs[4] + consumer_flags[2]
-constexpr std::size_t kJointState = 4 + 3 * kFloat;            // flags p v t
+constexpr std::size_t kJointControl = 5 * kFloat;           // p_des v_des kp kd t_ff
+constexpr std::size_t kLegControl = 4 * kJointControl + 4;  // abad hip knee foot + flags
+constexpr std::size_t kCmd = 4 * kLegControl + 2 * 4;       // legs[4] + consumer_flags[2]
+constexpr std::size_t kJointState = 4 + 3 * kFloat;         // flags p v t
 constexpr std::size_t kLegState = 4 * kJointState;
 constexpr std::size_t kState = 4 * kLegState + 2 * 4;
 constexpr std::size_t kImu = 8 + (3 + 3 + 4) * kFloat;

@@ -17,9 +17,9 @@ TEST(ShmConfig, ModeIsOctalWithOwnerReadWrite) {
   EXPECT_EQ(parse_shm_mode("660"), 0660u);
   EXPECT_EQ(parse_shm_mode("0666"), 0666u);
   EXPECT_EQ(parse_shm_mode("0600"), 0600u);
-  EXPECT_EQ(parse_shm_mode("0400"), std::nullopt);   // the owner must be able to write
-  EXPECT_EQ(parse_shm_mode("0860"), std::nullopt);   // not octal
-  EXPECT_EQ(parse_shm_mode("1660"), std::nullopt);   // beyond permission bits
+  EXPECT_EQ(parse_shm_mode("0400"), std::nullopt);  // the owner must be able to write
+  EXPECT_EQ(parse_shm_mode("0860"), std::nullopt);  // not octal
+  EXPECT_EQ(parse_shm_mode("1660"), std::nullopt);  // beyond permission bits
   EXPECT_EQ(parse_shm_mode("rw-rw----"), std::nullopt);
   EXPECT_EQ(parse_shm_mode(""), std::nullopt);
 }

@@ -95,9 +95,7 @@ TEST(ShmRegion, SecondOwnerOfALiveObjectIsRefused) {
   EXPECT_EQ(static_cast<unsigned char*>(first.data())[7], 42);
 }
 
-TEST(ShmRegion, BadNameIsReported) {
-  EXPECT_THROW(ShmRegion("/no/slashes/inside", 1024, 0660), std::runtime_error);
-}
+TEST(ShmRegion, BadNameIsReported) { EXPECT_THROW(ShmRegion("/no/slashes/inside", 1024, 0660), std::runtime_error); }
 
 }  // namespace
 }  // namespace cerebellum

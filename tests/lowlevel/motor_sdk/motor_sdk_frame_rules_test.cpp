@@ -63,10 +63,10 @@ TEST(MotorSdkFrameRules, JumpClampLimitsEachJointTypeToItsStep) {
   JointArray<double> reference{};
   reference.fill(-1.0);
   JointCommand frame = stiff_frame(-1.0, 20.0);
-  frame.q_des[0] = -1.0 + degrees(5.0);    // abad, within 8 deg
-  frame.q_des[3] = -1.0 - degrees(9.0);    // abad, beyond 8 deg
-  frame.q_des[4] = -1.0 - degrees(11.0);   // hip, beyond 10 deg
-  frame.q_des[8] = -1.0 + degrees(30.0);   // knee, beyond 12 deg
+  frame.q_des[0] = -1.0 + degrees(5.0);   // abad, within 8 deg
+  frame.q_des[3] = -1.0 - degrees(9.0);   // abad, beyond 8 deg
+  frame.q_des[4] = -1.0 - degrees(11.0);  // hip, beyond 10 deg
+  frame.q_des[8] = -1.0 + degrees(30.0);  // knee, beyond 12 deg
   const JumpClampResult result = clamp_position_jumps(frame, reference, parameters);
   EXPECT_NEAR(frame.q_des[0], -1.0 + degrees(5.0), 1e-12);
   EXPECT_NEAR(frame.q_des[3], -1.0 - degrees(8.0), 1e-12);

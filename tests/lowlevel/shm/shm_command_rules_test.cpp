@@ -17,9 +17,7 @@ JointCommand valid_command() {
   return command;
 }
 
-TEST(ShmCommandRules, AValidCommandPasses) {
-  EXPECT_TRUE(check_shm_command(valid_command(), CommandLimits{}).ok());
-}
+TEST(ShmCommandRules, AValidCommandPasses) { EXPECT_TRUE(check_shm_command(valid_command(), CommandLimits{}).ok()); }
 
 TEST(ShmCommandRules, GainsOnTheBoundsPassAndJustBeyondThemAreRejected) {
   const CommandLimits limits;

@@ -44,11 +44,11 @@ struct HighLevelClientOptions {
 
 enum class HighLevelClientStatus {
   Ok,
-  NotRunning,      // start() has not succeeded, or stop() was called
-  TransportError,  // LCM could not open a url or publish (last_error() says which)
-  Timeout,         // the wanted state was not reported in time
-  Refused,         // the MC answers BAN_TRANS: the command is not allowed or not available
-  InvalidArgument, // a heartbeat period outside (0, 100] ms
+  NotRunning,       // start() has not succeeded, or stop() was called
+  TransportError,   // LCM could not open a url or publish (last_error() says which)
+  Timeout,          // the wanted state was not reported in time
+  Refused,          // the MC answers BAN_TRANS: the command is not allowed or not available
+  InvalidArgument,  // a heartbeat period outside (0, 100] ms
 };
 const char* to_string(HighLevelClientStatus status);
 
