@@ -5,9 +5,30 @@
 // flips hip and knee to and from the MC's wire convention.
 #pragma once
 
+// what the official header pulls in, so an unmodified program that includes only this header
+// compiles (the seed's example uses signal, SIGINT and std::make_shared without including them)
+#include <assert.h>
+#include <lcm/lcm-cpp.hpp>
+#include <signal.h>
+#include <sys/mman.h>
+#include <sys/timerfd.h>
+#include <unistd.h>
+
 #include <atomic>
+#include <chrono>
+#include <cmath>
+#include <csignal>
 #include <cstdint>
+#include <iostream>
 #include <memory>
+#include <string>
+#include <thread>
+
+#include "leg_control_data_lcmt.hpp"
+#include "motor_ctrl_lcmt.hpp"
+#include "motor_ctrl_state_lcmt.hpp"
+#include "spi_data_t.hpp"
+#include "state_estimator_lcmt.hpp"
 
 struct RobotData {
   float q[12];                // joint angles, rad

@@ -14,6 +14,7 @@
 #include "app/stop_signal.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
+#include "io/lcm_motor_sdk/lcm_state_feedback.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_source.hpp"
 
 namespace cerebellum {
@@ -58,6 +59,13 @@ int run_sim_command(const std::vector<std::string>& args) {
       highlevel.emplace(mc.machine(), config.highlevel, config.loop_period_s, stderr);
       loop.add_observer(*highlevel);
     }
+    // state_estimator and leg_control_data: listed by both interfaces, published once for both
+    std::optional<LcmStateFeedback> state_feedback;
+    if (config.motor_sdk.enabled || config.highlevel.enabled) {
+      state_feedback.emplace(config.motor_sdk.control_url, config.motor_sdk.estimator_url, config.loop_period_s,
+                             motor_sdk ? &motor_sdk->source() : nullptr);
+      loop.add_observer(*state_feedback);
+    }
     SimTools tools(mc, options);
 
     std::printf("cerebellum ready: simulated CyberDog2 (%s), %.0f Hz loop, speed %s\n", config.robot.model_path.c_str(),
@@ -68,6 +76,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     const bool tools_ok = tools.finish(stdout, stderr);
     if (motor_sdk) motor_sdk->finish(stdout);
     if (highlevel) highlevel->finish(stdout);
+    if (state_feedback) state_feedback->finish();
     std::printf(
         "cerebellum stopped: %.2f s robot time in %.2f s wall time (%.1fx real time), %llu ticks, "
         "%llu late substeps, trunk height %.3f m (simulator truth)\n",

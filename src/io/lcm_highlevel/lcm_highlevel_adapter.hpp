@@ -3,7 +3,8 @@
 // cycle and hands it to the HighLevelMachine; it answers user_gait_file, and publishes
 // robot_control_response, motor_temperature and global_to_robot from what the loop thread copies
 // into a ring. The loop thread only decides what is due and copies (on_cycle).
-// state_estimator and leg_control_data belong to the motor SDK adapter (io/lcm_motor_sdk).
+// state_estimator and leg_control_data belong to LcmStateFeedback (io/lcm_motor_sdk), published once
+// for both CyberDog2 interfaces.
 #pragma once
 
 #include <atomic>

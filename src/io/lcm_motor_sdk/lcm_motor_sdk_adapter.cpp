@@ -7,7 +7,6 @@
 #include "io/common/wall_clock.hpp"
 #include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
-#include "io/lcm_motor_sdk/robot_state_messages.hpp"
 
 namespace cerebellum {
 namespace {
@@ -15,10 +14,6 @@ namespace {
 constexpr const char* kMotorCtrlChannel = "motor_ctrl";
 constexpr const char* kMotorCtrlStateChannel = "motor_ctrl_state";
 constexpr const char* kSpiDataChannel = "spi_data";
-constexpr const char* kLegControlDataChannel = "leg_control_data";
-constexpr const char* kStateEstimatorChannel = "state_estimator";
-// outside motor mode the state feedback goes out every 10th tick (50 Hz at 500 Hz)
-constexpr std::uint64_t kIdleFeedbackDecimation = 10;
 
 constexpr const char* kInterfaceName = "motor sdk";
 
@@ -33,7 +28,6 @@ LcmMotorSdkAdapter::LcmMotorSdkAdapter(const MotorSdkConfig& config, std::FILE* 
     : source_(config.parameters),
       log_(log),
       control_lcm_(open_lcm_url(config.control_url, kInterfaceName)),
-      estimator_lcm_(open_lcm_url(config.estimator_url, kInterfaceName)),
       count_log_period_(wall_seconds()) {
   control_lcm_->subscribe(kMotorCtrlChannel, &LcmMotorSdkAdapter::on_motor_ctrl, this);
   thread_.start([this] { step(); }, [this] { drain(); });
@@ -79,16 +73,10 @@ void LcmMotorSdkAdapter::on_motor_ctrl(const lcm::ReceiveBuffer* buffer, const s
 }
 
 void LcmMotorSdkAdapter::publish(const Telemetry& telemetry) {
-  const CycleRecord& record = telemetry.record;
-  const bool motor_mode = telemetry.status.motor_mode;
-  if (motor_mode) {
-    publish_message(*control_lcm_, kSpiDataChannel, make_spi_data(record.state));
-    publish_message(*control_lcm_, kMotorCtrlStateChannel, make_motor_ctrl_state(telemetry.status));
-  }
-  if (motor_mode || record.tick % kIdleFeedbackDecimation == 0) {
-    publish_message(*control_lcm_, kLegControlDataChannel, make_leg_control_data(record.state, record.command));
-    publish_message(*estimator_lcm_, kStateEstimatorChannel, make_state_estimator(record.state));
-  }
+  // state_estimator and leg_control_data belong to LcmStateFeedback (once for both interfaces)
+  if (!telemetry.status.motor_mode) return;
+  publish_message(*control_lcm_, kSpiDataChannel, make_spi_data(telemetry.record.state));
+  publish_message(*control_lcm_, kMotorCtrlStateChannel, make_motor_ctrl_state(telemetry.status));
 }
 
 void LcmMotorSdkAdapter::log_changes(const MotorSdkStatus& status) {

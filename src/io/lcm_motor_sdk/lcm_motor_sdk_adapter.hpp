@@ -1,7 +1,8 @@
 // The motor SDK on LCM: one thread receives motor_ctrl (raw, decoded here so malformed packets
 // are counted), stamps each frame with robot time and hands it to the MotorSdkSource; the same
-// thread publishes spi_data, motor_ctrl_state, leg_control_data and state_estimator from the
-// cycle records the loop thread copies into a ring. Nothing here runs inside the tick but the copy.
+// thread publishes spi_data and motor_ctrl_state (in motor mode) from the cycle records the loop
+// thread copies into a ring. Nothing here runs inside the tick but the copy. state_estimator and
+// leg_control_data come from LcmStateFeedback, shared with the high-level interface.
 #pragma once
 
 #include <atomic>
@@ -34,7 +35,7 @@ struct MotorCtrlRejections {
 
 class LcmMotorSdkAdapter final : public CycleObserver {
  public:
-  // opens both LCM urls and starts the thread; throws std::runtime_error naming a url LCM cannot
+  // opens the control url and starts the thread; throws std::runtime_error naming a url LCM cannot
   // open. log: where warnings go (never written from the loop thread)
   LcmMotorSdkAdapter(const MotorSdkConfig& config, std::FILE* log);
   ~LcmMotorSdkAdapter() override;
@@ -71,7 +72,6 @@ class LcmMotorSdkAdapter final : public CycleObserver {
   MotorSdkSource source_;
   std::FILE* log_;
   std::unique_ptr<lcm::LCM> control_lcm_;
-  std::unique_ptr<lcm::LCM> estimator_lcm_;
   SpscRing<Telemetry, 64> telemetry_;
   std::atomic<double> robot_time_s_{0.0};  // of the newest cycle record, stamps received frames
   std::atomic<std::uint64_t> wrong_fingerprint_{0};

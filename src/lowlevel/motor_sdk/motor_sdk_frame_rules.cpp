@@ -11,7 +11,7 @@ RangeClampCount clamp_to_ranges(JointCommand& frame, const MotorSdkParameters& p
   return clamp_command(frame, parameters.limits, parameters.zero_tolerance);
 }
 
-JumpClampResult clamp_position_jumps(JointCommand& frame, const JointArray<double>& reference_q,
+JumpClampResult clamp_position_jumps(JointCommand& frame, const JointArray<double>& measured_q,
                                      const MotorSdkParameters& parameters) {
   static constexpr std::uint16_t kJumpBit[kJointsPerLeg] = {kMotorSdkAbadJump, kMotorSdkHipJump, kMotorSdkKneeJump};
   JumpClampResult result;
@@ -19,7 +19,7 @@ JumpClampResult clamp_position_jumps(JointCommand& frame, const JointArray<doubl
     if (frame.kp[i] <= parameters.zero_tolerance) continue;
     const std::size_t joint = i % kJointsPerLeg;
     const double max_step = parameters.max_position_step_rad[joint];
-    if (clamp_into(frame.q_des[i], reference_q[i] - max_step, reference_q[i] + max_step)) {
+    if (clamp_into(frame.q_des[i], measured_q[i] - max_step, measured_q[i] + max_step)) {
       result.err_bits |= kJumpBit[joint];
       ++result.joints;
     }

@@ -22,8 +22,9 @@ struct JumpClampResult {
 // kp > zero_tolerance (elsewhere the position does not act)
 RangeClampCount clamp_to_ranges(JointCommand& frame, const MotorSdkParameters& parameters);
 
-// limits each acting joint's q_des to reference +- max_position_step_rad of its joint type
-JumpClampResult clamp_position_jumps(JointCommand& frame, const JointArray<double>& reference_q,
+// limits each acting joint's q_des to measured_q +- max_position_step_rad of its joint type (the
+// firmware measures the jump against the joint's angle, not against the previous frame)
+JumpClampResult clamp_position_jumps(JointCommand& frame, const JointArray<double>& measured_q,
                                      const MotorSdkParameters& parameters);
 
 // the activation frame: |kp|, |kd| and |tau_des| at or below tolerance on every joint

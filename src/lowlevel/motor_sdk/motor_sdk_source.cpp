@@ -46,7 +46,7 @@ void MotorSdkSource::on_refused(const char* holder) {
 }
 
 void MotorSdkSource::compute(const RobotState& state, JointCommand& command) {
-  while (std::optional<StampedFrame> frame = mailbox_.pop()) take_frame(*frame, state);
+  while (std::optional<StampedFrame> frame = mailbox_.pop()) take_frame(*frame);
 
   const double now_s = state.time_s;
   const double gap_s = now_s - last_frame_s_;
@@ -65,9 +65,17 @@ void MotorSdkSource::compute(const RobotState& state, JointCommand& command) {
   }
   command = active_;
   if (late) decay_late_command(command, state.q, gap_s, parameters_);
+  // the jump rule each tick against where the joints are (the firmware's variant): a stiff target
+  // far away is approached a few degrees ahead of the joint instead of being executed at once
+  set_err_bits(kJumpBits, false);
+  if (parameters_.position_mutation_limit) {
+    const JumpClampResult jumps = clamp_position_jumps(command, state.q, parameters_);
+    set_err_bits(jumps.err_bits, true);
+    bump(clamped_jumps_, jumps.joints);
+  }
 }
 
-void MotorSdkSource::take_frame(const StampedFrame& stamped, const RobotState& state) {
+void MotorSdkSource::take_frame(const StampedFrame& stamped) {
   const double interval_s = has_frame_ ? stamped.received_s - last_frame_s_ : 0.0;
   status_.ctrl_topic_interval_ms = interval_s * 1000.0;
   const bool follows_closely = has_frame_ && interval_s <= parameters_.lost_after_s + kTimeToleranceS;
@@ -94,17 +102,6 @@ void MotorSdkSource::take_frame(const StampedFrame& stamped, const RobotState& s
   bump(clamped_torques_, clamped.torques);
   bump(clamped_positions_, clamped.positions);
 
-  set_err_bits(kJumpBits, false);
-  if (parameters_.position_mutation_limit) {
-    // adjacent frames: the previous executed target where it was stiff, else where the joint is
-    JointArray<double> reference{};
-    for (std::size_t i = 0; i < kNumJoints; ++i) {
-      reference[i] = active_.kp[i] > parameters_.zero_tolerance ? active_.q_des[i] : state.q[i];
-    }
-    const JumpClampResult jumps = clamp_position_jumps(frame, reference, parameters_);
-    set_err_bits(jumps.err_bits, true);
-    bump(clamped_jumps_, jumps.joints);
-  }
   active_ = frame;
 }
 

@@ -8,9 +8,9 @@
 // - bit1 (lost > 500 ms, and on entry): kd 4 damping for 2.5 s, then limp (the firmware's
 //   variant); cleared by an all-zero frame that follows the previous frame within 500 ms, once
 //   bit1 has been set for 2 s
-// - bits 2-4: the step is measured between adjacent frames (the document's variant) against the
-//   previous executed q_des; where the previous frame gave that joint no stiffness (activation
-//   frames, after an error) the reference is the measured angle
+// - bits 2-4: every tick, each stiff joint's executed q_des is kept within 8 / 10 / 12 deg of the
+//   measured angle (the firmware's variant). Measured between adjacent frames (the document's
+//   words) a one-frame jump to a far pose is only delayed by a few ticks and throws the robot
 #pragma once
 
 #include <atomic>
@@ -41,7 +41,7 @@ struct MotorSdkCounters {
   std::uint64_t clamped_velocities = 0;
   std::uint64_t clamped_torques = 0;
   std::uint64_t clamped_positions = 0;  // q_des pulled inside the joint limits
-  std::uint64_t clamped_jumps = 0;      // q_des steps clamped (bits 2-4)
+  std::uint64_t clamped_jumps = 0;      // joint-ticks with q_des pulled towards the measured angle (bits 2-4)
 };
 
 class MotorSdkSource final : public LowLevelSource {
@@ -66,7 +66,7 @@ class MotorSdkSource final : public LowLevelSource {
   const MotorSdkParameters& parameters() const { return parameters_; }
 
  private:
-  void take_frame(const StampedFrame& frame, const RobotState& state);
+  void take_frame(const StampedFrame& frame);
   void raise_lost(double now_s);
   void set_err_bits(std::uint16_t bits, bool on);
   static void bump(std::atomic<std::uint64_t>& counter, std::uint64_t amount = 1) {

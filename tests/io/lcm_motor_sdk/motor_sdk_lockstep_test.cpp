@@ -3,6 +3,9 @@
 // dies makes the robot lie down, and only all-zero frames bring the interface back.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <array>
+
 #include "app/mc.hpp"
 #include "app/simulated_robot.hpp"
 #include "core/robot_model.hpp"
@@ -11,11 +14,18 @@
 namespace cerebellum {
 namespace {
 
+// a user program: the frame it sends after seeing the feedback and err_flag
+class SdkClient {
+ public:
+  virtual ~SdkClient() = default;
+  virtual JointCommand next(const RobotState& feedback, std::uint16_t err_flag) = 0;
+};
+
 // the official example's logic in SDK convention: all-zero while err_flag bit1 is set, then from
 // the current pose to lying over 1500 ticks, to standing over 1500 ticks, kp 60, kd 2
-class ExampleClient {
+class ExampleClient final : public SdkClient {
  public:
-  JointCommand next(const RobotState& feedback, std::uint16_t err_flag) {
+  JointCommand next(const RobotState& feedback, std::uint16_t err_flag) override {
     JointCommand frame;
     if (err_flag & kMotorSdkCommandLost) {
       start_q_ = feedback.q;
@@ -37,6 +47,21 @@ class ExampleClient {
   long tick_ = 0;
 };
 
+// the mistake of issue 13: activation, then the standing pose in one frame (kp 60, kd 2)
+class JumpToStandClient final : public SdkClient {
+ public:
+  JointCommand next(const RobotState&, std::uint16_t err_flag) override {
+    JointCommand frame;
+    if (err_flag & kMotorSdkCommandLost) return frame;
+    for (std::size_t i = 0; i < kNumJoints; ++i) {
+      frame.q_des[i] = robot::kStandPose[i % 3];
+      frame.kp[i] = 60.0;
+      frame.kd[i] = 2.0;
+    }
+    return frame;
+  }
+};
+
 class MotorSdkLockstep : public ::testing::Test {
  protected:
   MotorSdkLockstep() : mc_(make_simulated_mc(damper_config())), source_(MotorSdkParameters{}) {
@@ -50,7 +75,7 @@ class MotorSdkLockstep : public ::testing::Test {
   }
 
   // one tick; the client's frame (if any) arrives stamped with the robot time of the last record
-  void tick(ExampleClient* client) {
+  void tick(SdkClient* client) {
     const RobotState& feedback = mc_.loop().last_cycle().state;
     if (client != nullptr) {
       ASSERT_EQ(source_.mailbox().push(client->next(feedback, source_.status().err_flag), feedback.time_s),
@@ -58,11 +83,16 @@ class MotorSdkLockstep : public ::testing::Test {
     }
     mc_.loop().tick();
   }
-  void run(double seconds, ExampleClient* client) {
+  void run(double seconds, SdkClient* client) {
     const int ticks = static_cast<int>(seconds / mc_.loop().period_s() + 0.5);
     for (int k = 0; k < ticks; ++k) tick(client);
   }
   double height_m() { return mc_.simulation().ground_truth().position[2]; }
+  // z of the trunk's up axis in the world: 1 upright, below 0 on its back
+  double up_z() {
+    const std::array<double, 4> q = mc_.simulation().ground_truth().quat;
+    return 1.0 - 2.0 * (q[1] * q[1] + q[2] * q[2]);
+  }
   std::uint16_t err_flag() const { return source_.status().err_flag; }
 
   Mc mc_;
@@ -103,6 +133,29 @@ TEST_F(MotorSdkLockstep, ExampleClientStandsTheRobotUpAndADeadClientLetsItLieDow
   run(7.0, &second);
   EXPECT_EQ(err_flag(), 0);
   EXPECT_GE(height_m(), 0.2);
+}
+
+TEST_F(MotorSdkLockstep, JumpFromLyingToStandingInOneFrameIsSlowedToASafeStandUp) {
+  run(0.5, nullptr);
+  JumpToStandClient client;
+  // all-zero frames until bit1 clears (2 s after entering motor mode)
+  for (int k = 0; k < 1500 && source_.status().err_flag != 0; ++k) tick(&client);
+  ASSERT_EQ(err_flag(), 0);
+  EXPECT_LT(height_m(), 0.17);
+
+  // the standing pose at once: the firmware's rule lets each joint's target lead the measured
+  // angle by at most 8 / 10 / 12 deg, so the robot rises without leaving the ground
+  double highest_m = 0.0, lowest_up_z = 1.0;
+  for (int k = 0; k < 2000; ++k) {
+    tick(&client);
+    highest_m = std::max(highest_m, height_m());
+    lowest_up_z = std::min(lowest_up_z, up_z());
+  }
+  EXPECT_GT(source_.counters().clamped_jumps, 0u);
+  EXPECT_LT(highest_m, 0.32) << "the trunk was thrown up";
+  EXPECT_GT(lowest_up_z, 0.9) << "the trunk tipped over";
+  EXPECT_GE(height_m(), 0.2) << "the robot did not stand up";
+  EXPECT_EQ(err_flag(), 0) << "the target has been reached: no jump clamped any more";
 }
 
 TEST_F(MotorSdkLockstep, StandingRobotIsNotHandedOver) {

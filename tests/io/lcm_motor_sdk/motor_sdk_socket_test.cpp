@@ -121,20 +121,20 @@ class FeedbackListener {
   lcm::LCM estimator_;
 };
 
-TEST(MotorSdkSockets, AdapterPublishesAt50HzIdleAndEveryTickInMotorMode) {
+TEST(MotorSdkSockets, AdapterPublishesSpiDataAndStateOnlyInMotorModeEveryTick) {
   MotorSdkConfig config;
   LcmMotorSdkAdapter adapter(config, stderr);
   FeedbackListener listener;
   CycleRecord record;
   record.state.valid = true;
   record.state.q = robot::whole_body_pose(robot::kStandPose);
-  // idle: ticks 0..19 give state_estimator twice (ticks 0 and 10), no spi_data
+  // idle: nothing (state_estimator and leg_control_data belong to LcmStateFeedback)
   for (std::uint64_t tick = 0; tick < 20; ++tick) {
     record.tick = tick;
     adapter.on_cycle(record);
   }
   listener.pump(0.3);
-  EXPECT_EQ(listener.estimator_count, 2);
+  EXPECT_EQ(listener.estimator_count, 0);
   EXPECT_EQ(listener.spi_count, 0);
 
   // motor mode: every tick gives spi_data and motor_ctrl_state
@@ -146,7 +146,7 @@ TEST(MotorSdkSockets, AdapterPublishesAt50HzIdleAndEveryTickInMotorMode) {
   listener.pump(0.3);
   EXPECT_EQ(listener.spi_count, 5);
   EXPECT_EQ(listener.state_count, 5);
-  EXPECT_EQ(listener.estimator_count, 7);
+  EXPECT_EQ(listener.estimator_count, 0);
   EXPECT_EQ(listener.state.err_flag, kMotorSdkCommandLost);
   EXPECT_FLOAT_EQ(listener.spi.q_hip[2], -float(robot::kStandPose[1]));
   EXPECT_FLOAT_EQ(listener.spi.q_knee[3], -float(robot::kStandPose[2]));

@@ -200,26 +200,44 @@ TEST(MotorSdkSource, FirstZeroFrameAfterLongSilenceDoesNotClear) {
   EXPECT_EQ(rig.err_flag() & kMotorSdkCommandLost, 0);
 }
 
-TEST(MotorSdkSource, ThirtyDegreeJumpIsClampedStepByStep) {
+TEST(MotorSdkSource, ThirtyDegreeJumpLeadsTheMeasuredAngleByTwelveDegreesEveryTick) {
   SourceRig rig;
   rig.enter(0.0);
   int k = rig.activate(1) + 1;
   const double knee = rig.state.q[2];
   const double step = robot::deg(12.0);
   JointCommand frame = pose_frame(rig.state.q, 20.0, 1.0);
-  rig.push(frame, tick_time(k));
-  rig.tick(tick_time(k++));
-  EXPECT_EQ(rig.err_flag(), 0);
-
   frame.q_des[2] = knee + robot::deg(30.0);
+  // the joint does not move: every tick the target stays 12 deg ahead of it, with bit4
   for (int n = 1; n <= 3; ++n) {
     rig.push(frame, tick_time(k));
     rig.tick(tick_time(k++));
-    const double expected = std::min(knee + n * step, knee + robot::deg(30.0));
-    EXPECT_NEAR(rig.command.q_des[2], expected, 1e-12) << "frame " << n;
-    EXPECT_EQ(rig.err_flag(), n < 3 ? kMotorSdkKneeJump : 0) << "frame " << n;
+    EXPECT_NEAR(rig.command.q_des[2], knee + step, 1e-12) << "frame " << n;
+    EXPECT_EQ(rig.err_flag(), kMotorSdkKneeJump) << "frame " << n;
   }
-  EXPECT_EQ(rig.source.counters().clamped_jumps, 2u);
+  // no new frame: the held target is still measured against the joint, which has moved 20 deg
+  rig.state.q[2] = knee + robot::deg(20.0);
+  rig.tick(tick_time(k++));
+  EXPECT_NEAR(rig.command.q_des[2], knee + robot::deg(30.0), 1e-12);
+  EXPECT_EQ(rig.err_flag(), 0);
+  EXPECT_EQ(rig.source.counters().clamped_jumps, 3u);
+}
+
+// issue 13: a client stepping 10 deg per frame never jumps 12 deg between adjacent frames, yet
+// its target runs away from the joint; the rule measures against the joint, as the firmware does
+TEST(MotorSdkSource, JumpIsMeasuredAgainstTheMeasuredAngleNotThePreviousFrame) {
+  SourceRig rig;
+  rig.enter(0.0);
+  int k = rig.activate(1) + 1;
+  const double knee = rig.state.q[2];
+  JointCommand frame = pose_frame(rig.state.q, 60.0, 2.0);
+  for (int n = 1; n <= 5; ++n) {
+    frame.q_des[2] = knee + n * robot::deg(10.0);
+    rig.push(frame, tick_time(k));
+    rig.tick(tick_time(k++));
+  }
+  EXPECT_NEAR(rig.command.q_des[2], knee + robot::deg(12.0), 1e-12);
+  EXPECT_EQ(rig.err_flag(), kMotorSdkKneeJump);
 }
 
 TEST(MotorSdkSource, FirstStiffFrameIsMeasuredAgainstTheMeasuredAngle) {
