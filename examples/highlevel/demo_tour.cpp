@@ -37,6 +37,7 @@ robot_control_cmd_lcmt command(int mode, int gait, double vx = 0, double yaw_rat
   c.contact = 0x0F;
   c.vel_des[0] = static_cast<float>(vx);
   c.vel_des[2] = static_cast<float>(yaw_rate);
+  c.step_height[0] = c.step_height[1] = 0.06f;  // swing height (0..0.06 m), as the vendor's example sends
   return c;
 }
 

@@ -4,6 +4,7 @@
 #pragma once
 
 #include "app/mc.hpp"
+#include "control/locomotion/gait_table.hpp"
 
 namespace cerebellum {
 
@@ -44,6 +45,13 @@ inline HighLevelCommand high_level_command(ModeId mode, int gait, double vx = 0.
   c.mode = static_cast<int>(mode);
   c.gait_id = gait;
   c.vel_des = {static_cast<float>(vx), static_cast<float>(vy), static_cast<float>(yaw_rate)};
+  // a walking command carries the gait's usual swing height, as the vendor's examples send one
+  // (0 would be taken as commanded: the 5 mm floor of kStepHeightRange)
+  const GaitSpec* spec = find_gait(gait);
+  if (mode == ModeId::Locomotion && spec != nullptr) {
+    const auto step_height_m = static_cast<float>(spec->default_step_height_m);
+    c.step_height = {step_height_m, step_height_m};
+  }
   return c;
 }
 

@@ -28,11 +28,38 @@ bool HighLevelMachine::allows_low_level_latch() const {
 
 void HighLevelMachine::on_handover() { handed_over_ = true; }
 
-void HighLevelMachine::refuse(const HighLevelCommand& command, const char* reason) {
+void HighLevelMachine::refuse(const HighLevelCommand& command, const char* reason, const char* holder) {
   banned_ = true;
   counters_.banned_transitions.fetch_add(1, std::memory_order_relaxed);
-  refusals_.try_push(
-      {command.mode, command.gait_id, current_ != nullptr ? static_cast<int>(current_->id()) : -1, reason});
+  const int from_mode = handed_over_          ? static_cast<int>(ModeId::LowLevelMotor)
+                        : current_ != nullptr ? static_cast<int>(current_->id())
+                                              : -1;
+  refusals_.try_push({command.mode, command.gait_id, from_mode, reason, holder});
+}
+
+bool HighLevelMachine::take_input(const TimedCommand& input) {
+  counters_.received.fetch_add(1, std::memory_order_relaxed);
+  switch (queue_.receive(input.command, input.received_s)) {
+    case CommandQueue::Receipt::RunsNow:
+    case CommandQueue::Receipt::Queued: counters_.new_commands.fetch_add(1, std::memory_order_relaxed); return true;
+    case CommandQueue::Receipt::Rejected: counters_.rejected_non_finite.fetch_add(1, std::memory_order_relaxed); break;
+    case CommandQueue::Receipt::QueueFull: counters_.queue_full.fetch_add(1, std::memory_order_relaxed); break;
+    case CommandQueue::Receipt::Heartbeat:
+    case CommandQueue::Receipt::Ignored: break;
+  }
+  return false;
+}
+
+void HighLevelMachine::observe_while_held(const RobotState& state, const char* holder) {
+  // the latch lasts until restart: a new command is refused and never queued; heartbeats only
+  // refresh the client's life_count memory
+  while (const auto input = inbox_.try_pop()) {
+    if (!take_input(*input)) continue;
+    refuse(input->command, "a low-level client holds the robot until restart", holder);
+    queue_.clear();
+  }
+  applied_generation_ = queue_.generation();
+  update_status(state);
 }
 
 void HighLevelMachine::switch_to(Mode& mode, const RobotState& state, const HighLevelCommand& command) {
@@ -130,19 +157,7 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
     switch_to(*startup, state, startup_);
   }
   // client input of this tick
-  while (const auto input = inbox_.try_pop()) {
-    counters_.received.fetch_add(1, std::memory_order_relaxed);
-    switch (queue_.receive(input->command, input->received_s)) {
-      case CommandQueue::Receipt::RunsNow:
-      case CommandQueue::Receipt::Queued: counters_.new_commands.fetch_add(1, std::memory_order_relaxed); break;
-      case CommandQueue::Receipt::Rejected:
-        counters_.rejected_non_finite.fetch_add(1, std::memory_order_relaxed);
-        break;
-      case CommandQueue::Receipt::QueueFull: counters_.queue_full.fetch_add(1, std::memory_order_relaxed); break;
-      case CommandQueue::Receipt::Heartbeat:
-      case CommandQueue::Receipt::Ignored: break;
-    }
-  }
+  while (const auto input = inbox_.try_pop()) take_input(*input);
   // a client that went silent: get-down protection
   if (queue_.timed_out(state.time_s)) {
     counters_.timeouts.fetch_add(1, std::memory_order_relaxed);
@@ -179,12 +194,24 @@ ContactPlan HighLevelMachine::contact_plan() const {
 }
 
 void HighLevelMachine::update_status(const RobotState& state) {
-  status_.mode = handed_over_ ? static_cast<int>(ModeId::LowLevelMotor) : static_cast<int>(current_->id());
-  status_.gait_id = current_->gait_id();
   status_.contact = 0;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     if (state.contact[leg] > 0.5) status_.contact |= 1 << leg;
   }
+  status_.motor_error.fill(kMotorHealthy);
+  if (handed_over_) {
+    // the MC commands nothing: no gait, no progress, no protective stop of its own; the body's
+    // orientation is still watched so that a client sees a robot upside down
+    status_.mode = static_cast<int>(ModeId::LowLevelMotor);
+    status_.gait_id = 0;
+    status_.order_process_bar = 100;
+    status_.ori_error = orientation_error(state) ? 1 : 0;
+    status_.footpos_error = 0;
+    status_.switch_status = banned_ ? SwitchStatus::BanTransition : SwitchStatus::Done;
+    return;
+  }
+  status_.mode = static_cast<int>(current_->id());
+  status_.gait_id = current_->gait_id();
   status_.order_process_bar = current_->progress_percent();
   status_.ori_error = orientation_error_ ? 1 : 0;
   status_.footpos_error = foot_position_error_;
@@ -194,7 +221,6 @@ void HighLevelMachine::update_status(const RobotState& state) {
                           : current_->id() == ModeId::Lifted ? SwitchStatus::Lifted
                           : status_.order_process_bar < 100  ? SwitchStatus::Transitioning
                                                              : SwitchStatus::Done;
-  status_.motor_error.fill(kMotorHealthy);
 }
 
 }  // namespace cerebellum

@@ -32,7 +32,8 @@ struct RefusalNote {
   int mode = 0;
   int gait_id = 0;
   int from_mode = 0;
-  const char* reason = "";  // a static string
+  const char* reason = "";       // a static string
+  const char* holder = nullptr;  // the low-level source holding the robot (static), or nullptr
 };
 
 class HighLevelMachine final : public OwnBehaviour {
@@ -52,6 +53,8 @@ class HighLevelMachine final : public OwnBehaviour {
   ContactPlan contact_plan() const override;
   bool allows_low_level_latch() const override;
   void on_handover() override;
+  // refuses every new command (BAN_TRANS) and reports mode 15 with the live contacts and errors
+  void observe_while_held(const RobotState& state, const char* holder) override;
 
   // loop thread (or a CycleObserver in it): the response fields as of the last tick
   const HighLevelStatus& status() const { return status_; }
@@ -68,7 +71,9 @@ class HighLevelMachine final : public OwnBehaviour {
   // false when the command was refused
   bool apply(const RobotState& state, const HighLevelCommand& command);
   void switch_to(Mode& mode, const RobotState& state, const HighLevelCommand& command);
-  void refuse(const HighLevelCommand& command, const char* reason);
+  void refuse(const HighLevelCommand& command, const char* reason, const char* holder = nullptr);
+  // one tick of client input into the queue, counted; false when it holds no new command
+  bool take_input(const TimedCommand& input);
   void update_status(const RobotState& state);
   // the standing modes: tipped over -> PureDamper with ori_error; picked up -> Lifted; and back
   void watch_body(const RobotState& state);

@@ -20,6 +20,7 @@ void SourceArbiter::compute(const RobotState& state, JointCommand& command) {
   }
   if (latched_ != nullptr) {
     latched_->compute(state, command);
+    own_.observe_while_held(state, latched_->name());
   } else {
     own_.compute(state, command);
   }

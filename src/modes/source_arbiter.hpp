@@ -31,6 +31,9 @@ class OwnBehaviour : public MotionController {
   virtual bool allows_low_level_latch() const = 0;
   // a low-level source has taken the robot until restart
   virtual void on_handover() {}
+  // every tick while a low-level source holds the robot: the MC's own behaviour commands nothing
+  // but keeps taking its clients' input (to refuse it) and reporting the live state
+  virtual void observe_while_held(const RobotState& /*state*/, const char* /*holder*/) {}
 };
 
 class SourceArbiter final : public MotionController {

@@ -13,10 +13,9 @@ LocomotionTarget locomotion_target_from(const LocomotionCommand& command) {
   target.velocity = command.velocity;
   target.height_m = command.height_m;
   target.pitch_rad = command.pitch_rad;
-  const double default_step_height_m = find_gait(command.gait_id)->default_step_height_m;
-  auto step = [&](double value) { return value >= 0.01 ? value : default_step_height_m; };
-  target.step_height_front_m = step(command.step_height_m[0]);
-  target.step_height_rear_m = step(command.step_height_m[1]);
+  // as commanded: LocomotionMode::clamped has put them into kStepHeightRange
+  target.step_height_front_m = command.step_height_m[0];
+  target.step_height_rear_m = command.step_height_m[1];
   target.vertical_legs = (command.value & 0b10) != 0;
   return target;
 }

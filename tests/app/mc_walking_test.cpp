@@ -2,10 +2,14 @@
 // robot stand and walk (the path a real client's commands take, without the transport).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <string>
 
 #include "app/lockstep_client.hpp"
+#include "core/leg_kinematics.hpp"
+#include "core/robot_model.hpp"
 #include "app/simulated_robot.hpp"
 
 namespace cerebellum {
@@ -113,6 +117,63 @@ TEST(McWalking, ClimbsTheTenDegreeRamp) {
   // the ramp rises 0.52 m over 3 m from x = 1 m; the trunk ends on the plateau
   EXPECT_GT(mc.simulation().ground_truth().position[0], 4.0);
   EXPECT_GT(mc.simulation().ground_truth().position[2], 0.5 + 0.2);
+}
+
+}  // namespace
+}  // namespace cerebellum
+
+namespace cerebellum {
+namespace {
+
+struct LowStepWalk {
+  double forward_m = 0.0;
+  double lowest_trunk_m = 1.0;
+  double highest_foot_clearance_m = 0.0;  // over the feet and the walk's last 2 s
+  bool upright = true;
+};
+
+// trot 3 at 0.3 m/s for 4 s with the given step height; feet measured on the ground truth trunk
+LowStepWalk trot_with_step_height(float step_height_m) {
+  Mc mc = make_simulated_mc(lying_start());
+  LockstepClient client(mc);
+  client.run(command(ModeId::RecoveryStand, 0), 3.0);
+  HighLevelCommand walk = command(ModeId::Locomotion, 3, 0.3);
+  walk.step_height = {step_height_m, step_height_m};
+  LowStepWalk result;
+  const double x0 = mc.simulation().ground_truth().position[0];
+  const double t0 = mc.loop().last_cycle().state.time_s;
+  client.run(walk, 4.0, [&](const CycleRecord& record) {
+    const GroundTruth truth = mc.simulation().ground_truth();
+    result.lowest_trunk_m = std::min(result.lowest_trunk_m, truth.position[2]);
+    result.upright &= std::abs(record.state.rpy.x()) < 0.5 && std::abs(record.state.rpy.y()) < 0.5;
+    if (record.state.time_s - t0 < 2.0) return;
+    const Eigen::Quaterniond body_to_world(truth.quat[0], truth.quat[1], truth.quat[2], truth.quat[3]);
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+      const double foot_z = truth.position[2] + (body_to_world * record.state.foot_position_body[leg]).z();
+      result.highest_foot_clearance_m = std::max(result.highest_foot_clearance_m, foot_z - robot::kFootRadius);
+    }
+  });
+  result.forward_m = mc.simulation().ground_truth().position[0] - x0;
+  return result;
+}
+
+TEST(McWalking, TrotsWithAFiveMillimetreStepHeightAndTheSwingFollowsIt) {
+  const LowStepWalk low = trot_with_step_height(0.005f);
+  EXPECT_TRUE(low.upright);
+  EXPECT_GT(low.forward_m, 0.9);  // 4 s at 0.3 m/s, starting from a stand
+  EXPECT_GT(low.lowest_trunk_m, 0.22);
+  EXPECT_GT(low.highest_foot_clearance_m, 0.001);
+  EXPECT_LT(low.highest_foot_clearance_m, 0.008);  // not the gait's default 6 cm
+  const LowStepWalk mid = trot_with_step_height(0.03f);
+  EXPECT_NEAR(mid.highest_foot_clearance_m, 0.03, 0.005);
+}
+
+TEST(McWalking, AZeroStepHeightWalksAtTheFiveMillimetreFloor) {
+  const LowStepWalk zero = trot_with_step_height(0.0f);
+  EXPECT_TRUE(zero.upright);
+  EXPECT_GT(zero.forward_m, 0.9);
+  EXPECT_GT(zero.lowest_trunk_m, 0.22);
+  EXPECT_LT(zero.highest_foot_clearance_m, 0.008);
 }
 
 }  // namespace

@@ -264,5 +264,65 @@ TEST(HighLevelMachine, ARefusedMotionAfterAStandLeavesTheStandRunning) {
   EXPECT_EQ(m.machine.status().gait_id, 0);
 }
 
+// a low-level client that wants the robot from the first tick and commands nothing
+class GreedySource final : public LowLevelSource {
+ public:
+  const char* name() const override { return "the test client"; }
+  bool wants_control() const override { return true; }
+  void on_latched(const RobotState&) override {}
+  void on_refused(const char*) override {}
+  void compute(const RobotState&, JointCommand& command) override { command = JointCommand{}; }
+};
+
+TEST(HighLevelMachine, WhileALowLevelClientHoldsTheRobotTheResponseIsLiveAndNewCommandsAreBanned) {
+  Machine m(ModeId::PureDamper);
+  SourceArbiter arbiter(m.machine);
+  JointCommand command;
+  arbiter.compute(m.state, command);  // the machine starts in PureDamper
+  GreedySource client;
+  arbiter.add_low_level_source(client);
+  arbiter.compute(m.state, command);
+  ASSERT_EQ(arbiter.latched(), &client);
+
+  // live contacts and orientation, mode 15
+  m.state.contact = {1.0, 1.0, 0.0, 0.0};
+  m.state.rpy.x() = 3.0;  // upside down
+  arbiter.compute(m.state, command);
+  EXPECT_EQ(m.machine.status().mode, 15);
+  EXPECT_EQ(m.machine.status().contact, 0b0011);
+  EXPECT_EQ(m.machine.status().ori_error, 1);
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::Done);
+  for (std::uint32_t e : m.machine.status().motor_error) EXPECT_EQ(e, kMotorHealthy);
+
+  // a new command is refused (BAN_TRANS) and counted, with the holder named for the log
+  m.machine.submit(cmd(ModeId::RecoveryStand, 0, 1), m.state.time_s);
+  arbiter.compute(m.state, command);
+  EXPECT_EQ(m.machine.status().mode, 15);
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::BanTransition);
+  EXPECT_EQ(m.machine.counters().banned_transitions.load(), 1u);
+  EXPECT_EQ(m.recovery.entered, 0);
+  const auto note = m.machine.refusals().try_pop();
+  ASSERT_TRUE(note.has_value());
+  EXPECT_EQ(note->mode, 12);
+  EXPECT_EQ(note->from_mode, 15);
+  EXPECT_STREQ(note->holder, "the test client");
+
+  // heartbeats of the same life_count are no refusals, and a stream of them never overflows
+  for (int i = 0; i < 1000; ++i) {
+    EXPECT_TRUE(m.machine.submit(cmd(ModeId::RecoveryStand, 0, 1), m.state.time_s));
+    arbiter.compute(m.state, command);
+  }
+  EXPECT_EQ(m.machine.counters().banned_transitions.load(), 1u);
+  EXPECT_EQ(m.machine.counters().ring_overflow.load(), 0u);
+  EXPECT_EQ(m.machine.counters().timeouts.load(), 0u);
+  m.machine.submit(cmd(ModeId::Locomotion, 3, 2), m.state.time_s);
+  arbiter.compute(m.state, command);
+  EXPECT_EQ(m.machine.counters().banned_transitions.load(), 2u);
+  m.state.rpy.x() = 0.0;
+  arbiter.compute(m.state, command);
+  EXPECT_EQ(m.machine.status().ori_error, 0);
+  EXPECT_EQ(m.machine.status().mode, 15);
+}
+
 }  // namespace
 }  // namespace cerebellum

@@ -176,8 +176,13 @@ void LcmHighLevelAdapter::log_refusals() {
   gait_file_log_.tick(now_s);
   while (std::optional<RefusalNote> note = machine_.refusals().try_pop()) {
     char line[256];
-    std::snprintf(line, sizeof line, "refused mode %d gait %d while in mode %d (switch_status 5 BAN_TRANS): %s",
-                  note->mode, note->gait_id, note->from_mode, note->reason);
+    if (note->holder != nullptr) {
+      std::snprintf(line, sizeof line, "refused mode %d gait %d while in mode %d (switch_status 5 BAN_TRANS): %s (%s)",
+                    note->mode, note->gait_id, note->from_mode, note->reason, note->holder);
+    } else {
+      std::snprintf(line, sizeof line, "refused mode %d gait %d while in mode %d (switch_status 5 BAN_TRANS): %s",
+                    note->mode, note->gait_id, note->from_mode, note->reason);
+    }
     refusal_log_.line(now_s, line);
   }
 }

@@ -92,7 +92,7 @@ TEST(CmdOptions, WalkDefaultsToSlowTrotAndTakesTheGaitsLimits) {
             "cmd walk: --vy must be a number in [-0.15, 0.15] m/s (gait 2), got '0.2'");
   EXPECT_EQ(cmd_error({"walk", "--gait", "5"}), "cmd walk: --gait must be one of 2, 3, 4, 7, 10, 26, 27, got 5");
   EXPECT_EQ(cmd_error({"walk", "--step-height", "0.08"}),
-            "cmd walk: --step-height must be a number in [0, 0.06] m, got '0.08'");
+            "cmd walk: --step-height must be a number in [0.005, 0.06] m, got '0.08'");
 }
 
 TEST(CmdOptions, RawSetsEveryField) {

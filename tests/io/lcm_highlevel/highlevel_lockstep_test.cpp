@@ -17,6 +17,7 @@
 #include "io/lcm_highlevel/big_endian_writer.hpp"
 #include "io/lcm_highlevel/raw_lcm_peer.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_source.hpp"
 
 namespace cerebellum {
 namespace {
@@ -263,6 +264,61 @@ TEST_F(HighLevelLockstep, NineTimedStepsPushedAtOnceAllRunInOrder) {
   EXPECT_TRUE(
       eventually([&] { return log_text().find("refused mode 21 gait 3 while in mode 7") != std::string::npos; }, 3.0))
       << log_text();
+}
+
+TEST_F(HighLevelLockstep, WhileTheMotorSdkHoldsTheRobotResponsesAreLiveAndNewCommandsAreBanned) {
+  MotorSdkSource sdk{MotorSdkParameters{}};
+  mc_.arbiter().add_low_level_source(sdk);
+  tick(250);  // the robot drops and lies in Off
+  // a motor SDK client's zero frames latch it (from Off); it keeps sending them
+  auto tick_with_sdk = [&](int ticks) {
+    for (int i = 0; i < ticks; ++i) {
+      ASSERT_EQ(sdk.mailbox().push(JointCommand{}, mc_.loop().last_cycle().state.time_s), PushResult::Accepted);
+      tick(1);
+    }
+  };
+  tick_with_sdk(5);
+  ASSERT_EQ(mc_.arbiter().latched(), &sdk);
+  EXPECT_EQ(status().mode, 15);
+
+  // the robot ends up upside down: the response says so with the live contacts
+  mc_.simulation().set_base_pose({0.0, 0.0, 0.3}, {0.0, 1.0, 0.0, 0.0});
+  tick_with_sdk(500);
+  const RobotState& live = mc_.loop().last_cycle().state;
+  int live_contact = 0;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) live_contact |= live.contact[leg] > 0.5 ? 1 << leg : 0;
+  wait_delivered();
+  robot_control_response_lcmt response = peer_.responses().back();
+  EXPECT_EQ(response.mode, 15);
+  EXPECT_EQ(response.ori_error, 1);
+  EXPECT_EQ(response.contact, live_contact);
+  EXPECT_EQ(response.switch_status, 0);
+  for (std::int32_t word : response.motor_error) EXPECT_EQ(word, kMotorHealthyOnWire);
+
+  // a recovery stand is refused at once (BAN_TRANS), counted and logged naming the holder
+  send(command(12, 0, 1));
+  tick_with_sdk(20);
+  EXPECT_EQ(status().mode, 15);
+  EXPECT_EQ(machine_counters().banned_transitions.load(), 1u);
+  wait_delivered();
+  response = peer_.responses().back();
+  EXPECT_EQ(response.mode, 15);
+  EXPECT_EQ(response.switch_status, 5);
+  EXPECT_EQ(mc_.arbiter().latched(), &sdk);
+  EXPECT_TRUE(
+      eventually([&] { return log_text().find("refused mode 12 gait 0 while in mode 15") != std::string::npos; }, 3.0))
+      << log_text();
+  EXPECT_NE(log_text().find("the motor SDK"), std::string::npos) << log_text();
+
+  // heartbeats are no refusals, and the machine takes every one of them (no overflow)
+  for (int i = 0; i < 200; ++i) {
+    send(command(12, 0, 1));
+    tick_with_sdk(1);
+  }
+  EXPECT_EQ(machine_counters().banned_transitions.load(), 1u);
+  EXPECT_EQ(machine_counters().received.load(), 201u);
+  EXPECT_EQ(machine_counters().ring_overflow.load(), 0u);
+  EXPECT_EQ(machine_counters().timeouts.load(), 0u);
 }
 
 TEST_F(HighLevelLockstep, UserGaitFilesAreAnsweredAndStored) {
