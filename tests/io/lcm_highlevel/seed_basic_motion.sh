@@ -12,21 +12,10 @@ work=$2
 seeds=$3
 python=$4
 types=$5
-seed=$(ls "$seeds"/000_*.txt 2>/dev/null | head -1)
-if [[ -z "$seed" ]]; then
-  echo "skipped: no seed 000_*.txt in $seeds (shared/ is not beside the repository)"
-  exit 77
-fi
+source "$(dirname "$0")/../../seed_support.sh"
+seed=$(seed_file "$seeds") || exit $?
 example="$work/seed_basic_motion.py"
-# the first python block after the "#### 2.4.1" heading, exactly as written
-awk '/^#### 2\.4\.1/ {found = 1; next}
-     found && /^```python/ {inside = 1; next}
-     inside && /^```/ {exit}
-     inside {print}' "$seed" > "$example"
-if ! grep -q "robot_control_cmd" "$example"; then
-  echo "could not extract the basic-motion example from $seed"; exit 1
-fi
-echo "extracted $(wc -l < "$example") lines from $seed"
+extract_code_block "$seed" '^#### 2\.4\.1' '^```python' "$example" "robot_control_cmd"
 "$cerebellum" status --rate 20 --count 100000 --timeout 10 > "$work/status.log" 2>&1 &
 status=$!
 PYTHONPATH="$types" timeout 150 "$python" "$example"

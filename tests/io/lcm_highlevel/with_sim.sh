@@ -8,18 +8,9 @@ work=$2
 shift 2
 mkdir -p "$work"
 printf 'mc:\n  startup: off\nhighlevel:\n  enabled: true\n' > "$work/highlevel.yaml"
-"$cerebellum" sim --speed 1 --config "$work/highlevel.yaml" > "$work/sim.log" 2>&1 &
-sim=$!
-for _ in $(seq 300); do
-  grep -q "cerebellum ready" "$work/sim.log" && break
-  kill -0 "$sim" 2>/dev/null || break
-  sleep 0.1
-done
-if ! grep -q "cerebellum ready" "$work/sim.log"; then
-  echo "with_sim: the MC did not start:"; cat "$work/sim.log"
-  kill "$sim" 2>/dev/null
-  exit 1
-fi
+source "$(dirname "$0")/../../seed_support.sh"
+start_sim "$work/sim.log" "$cerebellum" sim --speed 1 --config "$work/highlevel.yaml"
+sim=$sim_pid
 "$@"
 status=$?
 kill -INT "$sim"

@@ -13,22 +13,11 @@ seeds=$3
 cxx=$4
 include_dirs=$5
 sdk_library=$6
-seed=$(ls "$seeds"/000_*.txt 2>/dev/null | head -1)
-if [[ -z "$seed" ]]; then
-  echo "skipped: no seed 000_*.txt in $seeds (shared/ is not beside the repository)"
-  exit 77
-fi
+source "$(dirname "$0")/../../seed_support.sh"
+seed=$(seed_file "$seeds") || exit $?
 rm -rf "$work" && mkdir -p "$work"
 example="$work/seed_example_motor_ctrl.cpp"
-# the first c++ block after the "### 3.4" heading, exactly as written
-awk '/^### 3\.4/ {found = 1; next}
-     found && /^```c\+\+/ {inside = 1; next}
-     inside && /^```/ {exit}
-     inside {print}' "$seed" > "$example"
-if ! grep -q "custom_interface.hpp" "$example"; then
-  echo "could not extract the motor SDK example from $seed"; exit 1
-fi
-echo "extracted $(wc -l < "$example") lines from $seed"
+extract_code_block "$seed" '^### 3\.4' '^```c\+\+' "$example" "custom_interface.hpp"
 
 # a user's build: the SDK's include directories, the library, liblcm, threads; no extra includes
 flags=()
@@ -46,18 +35,8 @@ echo "compiled unmodified"
 
 printf 'mc:\n  startup: damper\nmotor_sdk:\n  enabled: true\n' > "$work/sim.yaml"
 # 12 s of robot time at real-time speed: start-up, activation 2 s, 3 s to lying, 3 s up, holding
-"$cerebellum" sim --speed 1 --duration 12 --config "$work/sim.yaml" > "$work/sim.log" 2>&1 &
-sim=$!
-for _ in $(seq 300); do
-  grep -q "cerebellum ready" "$work/sim.log" && break
-  kill -0 "$sim" 2>/dev/null || break
-  sleep 0.1
-done
-if ! grep -q "cerebellum ready" "$work/sim.log"; then
-  echo "the MC did not start:"; cat "$work/sim.log"
-  kill "$sim" 2>/dev/null
-  exit 1
-fi
+start_sim "$work/sim.log" "$cerebellum" sim --speed 1 --duration 12 --config "$work/sim.yaml"
+sim=$sim_pid
 "$work/seed_example_motor_ctrl" > "$work/example.log" 2>&1 &
 example=$!
 wait "$sim"

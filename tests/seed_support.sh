@@ -1,0 +1,46 @@
+# Shared by the tests that run the seeds' example programs and user programs against
+# `cerebellum sim` (source it from bash).
+
+# seed_file <seeds dir>: prints the CyberDog2 seed (000_*.txt), or exits 77 (skipped) without it
+seed_file() {
+  local seed
+  seed=$(ls "$1"/000_*.txt 2>/dev/null | head -1)
+  if [[ -z "$seed" ]]; then
+    echo "skipped: no seed 000_*.txt in $1 (shared/ is not beside the repository)" >&2
+    exit 77
+  fi
+  echo "$seed"
+}
+
+# extract_code_block <seed> <heading regex> <fence regex> <out file> <text it must contain>:
+# the first fenced block of that language after the heading, exactly as written
+extract_code_block() {
+  # the patterns go through the environment: awk -v would eat their backslashes
+  heading="$2" fence="$3" awk '$0 ~ ENVIRON["heading"] {found = 1; next}
+       found && $0 ~ ENVIRON["fence"] {inside = 1; next}
+       inside && /^```/ {exit}
+       inside {print}' "$1" > "$4"
+  if ! grep -q "$5" "$4"; then
+    echo "could not extract the example after /$2/ from $1"
+    exit 1
+  fi
+  echo "extracted $(wc -l < "$4") lines from $1"
+}
+
+# start_sim <log file> <cerebellum> <sim arguments...>: starts `cerebellum sim` in the background,
+# sets sim_pid and waits for its ready line; exits 1 with the log when it does not start
+start_sim() {
+  local log=$1
+  shift
+  "$@" > "$log" 2>&1 &
+  sim_pid=$!
+  for _ in $(seq 300); do
+    grep -q "cerebellum ready" "$log" && return 0
+    kill -0 "$sim_pid" 2>/dev/null || break
+    sleep 0.1
+  done
+  echo "the MC did not start:"
+  cat "$log"
+  kill "$sim_pid" 2>/dev/null
+  exit 1
+}
