@@ -3,16 +3,19 @@
 #include <chrono>
 
 #include "core/joint_layout.hpp"
+#include "io/common/wall_clock.hpp"
 
 namespace cerebellum {
 namespace {
 
 constexpr const char* kLegNames[kNumLegs] = {"FR", "FL", "RR", "RL"};
 constexpr const char* kJointNames[kJointsPerLeg] = {"abad", "hip", "knee"};
+constexpr int kClientLinesPerSecond = 5;
 
 }  // namespace
 
-ShmEventLog::ShmEventLog(std::FILE* out) : out_(out) {
+ShmEventLog::ShmEventLog(std::FILE* out)
+    : out_(out), client_lines_(out, "cerebellum shm", "rejected or ignored command frames", kClientLinesPerSecond) {
   printer_ = std::thread([this] {
     while (running_.load()) {
       const std::uint64_t requested = flush_requests_.load();
@@ -35,6 +38,7 @@ void ShmEventLog::flush() {
 }
 
 void ShmEventLog::drain() {
+  client_lines_.tick(wall_seconds());
   while (auto event = ring_.try_pop()) print(*event);
   const std::size_t dropped = ring_.dropped();
   if (dropped != dropped_reported_) {
@@ -49,18 +53,23 @@ void ShmEventLog::print(const ShmEvent& event) {
     case ShmEventKind::FrameRejected: {
       const ShmCommandCheck& c = event.check;
       const char* why = c.fault == ShmCommandFault::NonFinite ? "not finite" : "gain out of range";
-      std::fprintf(out_, "cerebellum shm: t=%.3f s command frame rejected: %s %s %s = %g (%s); last frame kept\n",
-                   event.time_s, kLegNames[c.joint / kJointsPerLeg], kJointNames[c.joint % kJointsPerLeg],
-                   shm_command_field_name(c.field), c.value, why);
+      char line[192];
+      std::snprintf(line, sizeof line, "t=%.3f s command frame rejected: %s %s %s = %g (%s); last frame kept",
+                    event.time_s, kLegNames[c.joint / kJointsPerLeg], kJointNames[c.joint % kJointsPerLeg],
+                    shm_command_field_name(c.field), c.value, why);
+      client_lines_.line(wall_seconds(), line);
       break;
     }
     case ShmEventKind::Latched:
       std::fprintf(out_, "cerebellum shm: t=%.3f s low-level client took control of the motors\n", event.time_s);
       break;
-    case ShmEventKind::Refused:
-      std::fprintf(out_, "cerebellum shm: t=%.3f s command frames ignored: %s has the robot\n", event.time_s,
-                   event.holder != nullptr ? event.holder : "another source");
+    case ShmEventKind::Refused: {
+      char line[160];
+      std::snprintf(line, sizeof line, "t=%.3f s command frames ignored: %s has the robot", event.time_s,
+                    event.holder != nullptr ? event.holder : "another source");
+      client_lines_.line(wall_seconds(), line);
       break;
+    }
     case ShmEventKind::CommandTimedOut:
       std::fprintf(out_,
                    "cerebellum shm: t=%.3f s no command frame for %d cycles: command cleared, motors damped "

@@ -8,6 +8,7 @@
 #include <thread>
 
 #include "core/spsc_ring.hpp"
+#include "io/common/rate_limited_log.hpp"
 #include "io/shm_lowlevel/shm_codec.hpp"
 
 namespace cerebellum {
@@ -34,12 +35,16 @@ class ShmEventLog {
   void post(const ShmEvent& event) { ring_.try_push(event); }
   // print what is queued now and wait until it is written (any thread but the loop's)
   void flush();
+  // lines a client provoked (rejected or ignored frames) that the rate limit did not print
+  std::uint64_t client_lines_suppressed() const { return client_lines_.suppressed(); }
 
  private:
   void drain();
   void print(const ShmEvent& event);
 
   std::FILE* out_;
+  // a client can send a bad frame every millisecond: at most a few such lines per second
+  RateLimitedLog client_lines_;
   SpscRing<ShmEvent, 64> ring_;
   std::size_t dropped_reported_ = 0;
   std::atomic<bool> running_{true};
