@@ -23,11 +23,11 @@ void RateLimitedLog::line(double now_s, const std::string& text) {
   tick(now_s);
   if (lines_in_window_ >= lines_per_second_) {
     ++suppressed_in_window_;
-    ++suppressed_total_;
+    suppressed_total_.fetch_add(1, std::memory_order_relaxed);
     return;
   }
   ++lines_in_window_;
-  ++written_;
+  written_.fetch_add(1, std::memory_order_relaxed);
   std::fprintf(out_, "%s: %s\n", prefix_.c_str(), text.c_str());
   std::fflush(out_);
 }

@@ -2,6 +2,7 @@
 // are counted and summed up in one line when the second is over, so a flood cannot fill the log.
 #pragma once
 
+#include <atomic>
 #include <cstdint>
 #include <cstdio>
 #include <string>
@@ -18,8 +19,9 @@ class RateLimitedLog {
   // ends the second when it is over: one summary line for what was not shown
   void tick(double now_s);
 
-  std::uint64_t written() const { return written_; }
-  std::uint64_t suppressed() const { return suppressed_total_; }
+  // readable from any thread
+  std::uint64_t written() const { return written_.load(std::memory_order_relaxed); }
+  std::uint64_t suppressed() const { return suppressed_total_.load(std::memory_order_relaxed); }
 
  private:
   std::FILE* out_;
@@ -29,8 +31,8 @@ class RateLimitedLog {
   double window_start_s_ = -1.0e300;
   int lines_in_window_ = 0;
   std::uint64_t suppressed_in_window_ = 0;
-  std::uint64_t written_ = 0;
-  std::uint64_t suppressed_total_ = 0;
+  std::atomic<std::uint64_t> written_{0};
+  std::atomic<std::uint64_t> suppressed_total_{0};
 };
 
 }  // namespace cerebellum
