@@ -47,6 +47,9 @@ MujocoBackend::MujocoBackend(const MujocoBackendConfig& config) : config_(config
     }
   }
   trunk_body_ = require_id(model_, mjOBJ_BODY, "trunk", config.model_path);
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    foot_geom_[leg] = require_id(model_, mjOBJ_GEOM, std::string(kLegNames[leg]) + "_foot", config.model_path);
+  }
   imu_quat_address_ = sensor_address(model_, "imu_quat", config.model_path);
   imu_gyro_address_ = sensor_address(model_, "imu_gyro", config.model_path);
   imu_accel_address_ = sensor_address(model_, "imu_accel", config.model_path);
@@ -132,6 +135,19 @@ GroundTruth MujocoBackend::ground_truth() const {
     truth.angular_velocity_body[k] = data_->qvel[3 + k];
   }
   for (int k = 0; k < 4; ++k) truth.quat[k] = data_->qpos[3 + k];
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    truth.q[i] = data_->qpos[qpos_address_[i]];
+    truth.qd[i] = data_->qvel[dof_address_[i]];
+    truth.tau[i] = applied_torque_[i];
+  }
+  // robot geoms collide with the world only (the model's contype/conaffinity), so any contact of
+  // a foot geom is a foot on the ground or the terrain
+  for (int c = 0; c < data_->ncon; ++c) {
+    const mjContact& contact = data_->contact[c];
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+      if (contact.geom1 == foot_geom_[leg] || contact.geom2 == foot_geom_[leg]) truth.foot_contact[leg] = true;
+    }
+  }
   return truth;
 }
 

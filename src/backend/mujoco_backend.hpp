@@ -72,6 +72,7 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   JointArray<int> dof_address_{};
   JointArray<int> actuator_id_{};
   int trunk_body_ = -1;
+  std::array<int, kNumLegs> foot_geom_{};
   int imu_quat_address_ = -1;
   int imu_gyro_address_ = -1;
   int imu_accel_address_ = -1;

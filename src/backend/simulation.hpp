@@ -20,6 +20,12 @@ struct GroundTruth {
   std::array<double, 4> quat{1, 0, 0, 0};  // w, x, y, z, body to world
   std::array<double, 3> velocity_world{};
   std::array<double, 3> angular_velocity_body{};
+  // each foot (FR, FL, RR, RL) touches the ground or terrain in the simulator's contact list
+  std::array<bool, kNumLegs> foot_contact{};
+  // joints in the SDK / URDF convention (core/joint_layout.hpp); tau is what the motors applied
+  JointArray<double> q{};
+  JointArray<double> qd{};
+  JointArray<double> tau{};
 };
 
 class Simulation {
