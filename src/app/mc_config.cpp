@@ -193,7 +193,7 @@ McConfig load_config(const std::string& path) {
   McConfig config = default_config();
   if (root.IsNull()) return config;
   const SectionReader top(root, path, "<top>",
-                          {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk", "highlevel"});
+                          {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk", "highlevel", "sim_truth"});
   const fs::path base_dir = fs::absolute(path).parent_path();
 
   if (root["mc"]) {
@@ -243,6 +243,10 @@ McConfig load_config(const std::string& path) {
     read_highlevel(SectionReader(root["highlevel"], path, "highlevel",
                                  {"enabled", "command_url", "response_url", "odometry_url", "response_keepalive_s"}),
                    config.highlevel);
+  }
+  if (root["sim_truth"]) {
+    SectionReader(root["sim_truth"], path, "sim_truth", {"rate_hz"})
+        .number("rate_hz", config.sim_truth.rate_hz, 0.0, kSimTruthRateMaxHz);
   }
   return config;
 }

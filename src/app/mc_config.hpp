@@ -9,6 +9,7 @@
 #include "control/stand_up_controller.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
+#include "io/lcm_sim_truth/sim_truth_config.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
 #include "modes/locomotion_stand.hpp"
 #include "safety/command_guard.hpp"
@@ -32,6 +33,7 @@ struct McConfig {
   ShmLowLevelConfig shm;
   MotorSdkConfig motor_sdk;
   HighLevelLcmConfig highlevel;
+  SimTruthConfig sim_truth;  // simulation only
 };
 
 // raised for a bad file, key or value; the message names the file, the key and what is accepted

@@ -10,11 +10,13 @@
 #include "app/sim_options.hpp"
 #include "app/mc.hpp"
 #include "app/record_tools.hpp"
+#include "app/served_endpoints.hpp"
 #include "app/simulated_robot.hpp"
 #include "app/stop_signal.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
 #include "io/lcm_motor_sdk/lcm_state_feedback.hpp"
+#include "io/lcm_sim_truth/sim_truth_publisher.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_source.hpp"
 
 namespace cerebellum {
@@ -66,10 +68,18 @@ int run_sim_command(const std::vector<std::string>& args) {
                              motor_sdk ? &motor_sdk->source() : nullptr);
       loop.add_observer(*state_feedback);
     }
+    // the simulation's ground truth for tools and users' tests; the MC never reads it
+    std::optional<SimTruthPublisher> sim_truth;
+    if (config.sim_truth.rate_hz > 0.0) {
+      sim_truth.emplace(mc.simulation(), config.highlevel.odometry_url, config.sim_truth, config.loop_period_s);
+      loop.add_observer(*sim_truth);
+    }
     SimTools tools(mc, options);
 
-    std::printf("cerebellum ready: simulated CyberDog2 (%s), %.0f Hz loop, speed %s\n", config.robot.model_path.c_str(),
-                1.0 / config.loop_period_s, options.speed > 0.0 ? std::to_string(options.speed).c_str() : "max");
+    char speed[32] = "max";
+    if (options.speed > 0.0) std::snprintf(speed, sizeof(speed), "%gx real time", options.speed);
+    std::printf("cerebellum ready: simulated CyberDog2 (%s), %.0f Hz loop, speed %s; serving %s\n",
+                config.robot.model_path.c_str(), 1.0 / config.loop_period_s, speed, served_endpoints(config).c_str());
     std::fflush(stdout);
     const RunStats stats = tools.run({options.duration_s, options.speed}, stop_signal.flag());
     reporter.finish();
@@ -77,6 +87,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     if (motor_sdk) motor_sdk->finish(stdout);
     if (highlevel) highlevel->finish(stdout);
     if (state_feedback) state_feedback->finish();
+    if (sim_truth) sim_truth->finish();
     std::printf(
         "cerebellum stopped: %.2f s robot time in %.2f s wall time (%.1fx real time), %llu ticks, "
         "%llu late substeps, trunk height %.3f m (simulator truth)\n",

@@ -8,11 +8,11 @@
 namespace cerebellum {
 
 struct MotorSdkConfig {
-  // off by default: an enabled interface opens multicast sockets, which belong in a robot's
-  // network or a private network namespace
-  bool enabled = false;
-  std::string control_url = "udpm://239.255.76.67:7667?ttl=255";    // motor_ctrl, spi_data, ...
-  std::string estimator_url = "udpm://239.255.76.67:7669?ttl=255";  // state_estimator
+  // served by default on this host only: ttl=0 keeps every packet on the machine (the robot's
+  // network takes ttl=255, config/robot-network.yaml)
+  bool enabled = true;
+  std::string control_url = "udpm://239.255.76.67:7667?ttl=0";    // motor_ctrl, spi_data, ...
+  std::string estimator_url = "udpm://239.255.76.67:7669?ttl=0";  // state_estimator
   std::string user_parameter_file;                                  // empty: the rules' defaults
   MotorSdkParameters parameters;  // position_mutation_limit comes from the user parameter file
 };

@@ -7,7 +7,7 @@
 namespace cerebellum {
 
 struct ShmLowLevelConfig {
-  bool enabled = false;
+  bool enabled = true;  // the objects are local to this host by nature
   // the objects are "/" + name_prefix + "spline_shm" and "/" + name_prefix + "imu_shm"; empty
   // gives the vendor's names, a prefix lets several MCs (or parallel tests) share one host
   std::string name_prefix;

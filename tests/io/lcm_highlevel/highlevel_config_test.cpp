@@ -48,24 +48,24 @@ class HighLevelConfigFile : public ::testing::Test {
   }
 };
 
-TEST_F(HighLevelConfigFile, DefaultsAreOffWithTheInterfaceUrls) {
+TEST_F(HighLevelConfigFile, DefaultsServeTheInterfaceUrlsOnThisHostOnly) {
   const McConfig config = default_config();
-  EXPECT_FALSE(config.highlevel.enabled);
-  EXPECT_EQ(config.highlevel.command_url, "udpm://239.255.76.67:7671?ttl=255");
-  EXPECT_EQ(config.highlevel.response_url, "udpm://239.255.76.67:7670?ttl=255");
-  EXPECT_EQ(config.highlevel.odometry_url, "udpm://239.255.76.67:7667?ttl=255");
+  EXPECT_TRUE(config.highlevel.enabled);
+  EXPECT_EQ(config.highlevel.command_url, "udpm://239.255.76.67:7671?ttl=0");
+  EXPECT_EQ(config.highlevel.response_url, "udpm://239.255.76.67:7670?ttl=0");
+  EXPECT_EQ(config.highlevel.odometry_url, "udpm://239.255.76.67:7667?ttl=0");
   EXPECT_DOUBLE_EQ(config.highlevel.response_keepalive_s, 0.1);
 }
 
 TEST_F(HighLevelConfigFile, EveryKeyIsRead) {
   const McConfig config = load_config(
-      write("highlevel:\n  enabled: true\n  command_url: udpm://239.255.76.67:7671?ttl=0\n"
-            "  response_url: udpm://239.255.76.67:7670?ttl=0\n  odometry_url: udpm://239.255.76.67:7667?ttl=0\n"
+      write("highlevel:\n  enabled: false\n  command_url: udpm://239.255.76.67:7671?ttl=255\n"
+            "  response_url: udpm://239.255.76.67:7670?ttl=255\n  odometry_url: udpm://239.255.76.67:7667?ttl=255\n"
             "  response_keepalive_s: 0\n"));
-  EXPECT_TRUE(config.highlevel.enabled);
-  EXPECT_EQ(config.highlevel.command_url, "udpm://239.255.76.67:7671?ttl=0");
-  EXPECT_EQ(config.highlevel.response_url, "udpm://239.255.76.67:7670?ttl=0");
-  EXPECT_EQ(config.highlevel.odometry_url, "udpm://239.255.76.67:7667?ttl=0");
+  EXPECT_FALSE(config.highlevel.enabled);
+  EXPECT_EQ(config.highlevel.command_url, "udpm://239.255.76.67:7671?ttl=255");
+  EXPECT_EQ(config.highlevel.response_url, "udpm://239.255.76.67:7670?ttl=255");
+  EXPECT_EQ(config.highlevel.odometry_url, "udpm://239.255.76.67:7667?ttl=255");
   EXPECT_DOUBLE_EQ(config.highlevel.response_keepalive_s, 0.0);
 }
 

@@ -60,23 +60,23 @@ TEST_F(MotorSdkConfigFiles, ConfigSectionIsReadWithTheUserFileRelativeToIt) {
   write("user.yaml", "motor_sdk_position_mutation_limit: 0\n");
   const std::string config_path = write("mc.yaml",
                                         "mc:\n  startup: damper\n"
-                                        "motor_sdk:\n  enabled: true\n"
-                                        "  control_url: udpm://239.255.76.67:7667?ttl=0\n"
-                                        "  estimator_url: udpm://239.255.76.67:7669?ttl=0\n"
+                                        "motor_sdk:\n  enabled: false\n"
+                                        "  control_url: udpm://239.255.76.67:7667?ttl=255\n"
+                                        "  estimator_url: udpm://239.255.76.67:7669?ttl=255\n"
                                         "  user_parameter_file: user.yaml\n");
   const McConfig config = load_config(config_path);
-  EXPECT_TRUE(config.motor_sdk.enabled);
-  EXPECT_EQ(config.motor_sdk.control_url, "udpm://239.255.76.67:7667?ttl=0");
-  EXPECT_EQ(config.motor_sdk.estimator_url, "udpm://239.255.76.67:7669?ttl=0");
+  EXPECT_FALSE(config.motor_sdk.enabled);
+  EXPECT_EQ(config.motor_sdk.control_url, "udpm://239.255.76.67:7667?ttl=255");
+  EXPECT_EQ(config.motor_sdk.estimator_url, "udpm://239.255.76.67:7669?ttl=255");
   EXPECT_EQ(fs::path(config.motor_sdk.user_parameter_file), dir_ / "user.yaml");
   EXPECT_FALSE(config.motor_sdk.parameters.position_mutation_limit);
 }
 
-TEST_F(MotorSdkConfigFiles, DefaultsAreOffWithTheVendorUrls) {
+TEST_F(MotorSdkConfigFiles, DefaultsServeTheVendorUrlsOnThisHostOnly) {
   const McConfig config = default_config();
-  EXPECT_FALSE(config.motor_sdk.enabled);
-  EXPECT_EQ(config.motor_sdk.control_url, "udpm://239.255.76.67:7667?ttl=255");
-  EXPECT_EQ(config.motor_sdk.estimator_url, "udpm://239.255.76.67:7669?ttl=255");
+  EXPECT_TRUE(config.motor_sdk.enabled);
+  EXPECT_EQ(config.motor_sdk.control_url, "udpm://239.255.76.67:7667?ttl=0");
+  EXPECT_EQ(config.motor_sdk.estimator_url, "udpm://239.255.76.67:7669?ttl=0");
   EXPECT_TRUE(config.motor_sdk.parameters.position_mutation_limit);
 }
 

@@ -35,9 +35,9 @@ TEST(ShmConfig, PrefixMakesTheObjectNames) {
   EXPECT_FALSE(shm_name_prefix_problem(std::string(65, 'x')).empty());
 }
 
-TEST(ShmConfig, DefaultsAreDisabledVendorNamesAndUserGroupOnly) {
+TEST(ShmConfig, DefaultsAreServedVendorNamesAndUserGroupOnly) {
   const ShmLowLevelConfig shm = default_config().shm;
-  EXPECT_FALSE(shm.enabled);
+  EXPECT_TRUE(shm.enabled);
   EXPECT_EQ(shm.name_prefix, "");
   EXPECT_EQ(shm.mode, 0660u);
   EXPECT_EQ(shm.command_timeout_cycles, 10);
@@ -55,8 +55,8 @@ class ShmConfigFile : public ::testing::Test {
 };
 
 TEST_F(ShmConfigFile, SectionIsRead) {
-  const McConfig config = load_config(write("shm:\n  enabled: true\n  name_prefix: dog2_\n  mode: 0640\n"));
-  EXPECT_TRUE(config.shm.enabled);
+  const McConfig config = load_config(write("shm:\n  enabled: false\n  name_prefix: dog2_\n  mode: 0640\n"));
+  EXPECT_FALSE(config.shm.enabled);
   EXPECT_EQ(config.shm.name_prefix, "dog2_");
   EXPECT_EQ(config.shm.mode, 0640u);
 }
