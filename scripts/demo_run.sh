@@ -1,7 +1,9 @@
 #!/usr/bin/env bash
 # The demo itself, on a built tree, inside a network namespace (scripts/demo.sh sets that up).
 #   scripts/demo_run.sh [--short]
-# Environment (for the tests): DEMO_OUT (default build/demo), CEREBELLUM_BIN, DEMO_TOUR_BIN.
+# Environment (for the tests): DEMO_OUT (default build/demo), CEREBELLUM_BIN, DEMO_TOUR_BIN,
+# DEMO_RECORD_SIZE (default 1280x720; the video is 30 fps, rendered off-screen in software: the
+# frames buffered during the run are rendered after it, which takes a while at 1280x720).
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${DEMO_OUT:-$root/build/demo}
@@ -9,7 +11,7 @@ cerebellum=${CEREBELLUM_BIN:-$root/build/src/app/cerebellum}
 tour=${DEMO_TOUR_BIN:-$root/build/examples/highlevel/cerebellum_demo_tour}
 mkdir -p "$out"
 sim=("$cerebellum" sim --config "$root/config/demo.yaml" --speed 1
-     --record "$out/demo.mp4" --record-fps 10 --record-size 480x360 --telemetry "$out/telemetry.csv")
+     --record "$out/demo.mp4" --record-size "${DEMO_RECORD_SIZE:-1280x720}" --telemetry "$out/telemetry.csv")
 cd "$out"
 echo "demo: starting the MC on the simulated robot (log: $out/sim.log)"
 "${sim[@]}" > "$out/sim.log" 2>&1 &
@@ -24,6 +26,7 @@ done
 status=0
 "$tour" "$@" || status=$?
 kill -INT $sim_pid
+echo "demo: the MC stopped; rendering the rest of the video (tail -f $out/sim.log)"
 wait $sim_pid || status=$?
 trap - EXIT
 /usr/bin/python3 "$root/scripts/plot_telemetry.py" "$out/telemetry.csv" --out "$out" > "$out/plots.log" 2>&1 || status=$?

@@ -17,6 +17,7 @@ SimTools::SimTools(Mc& mc, const SimOptions& options) : mc_(mc), options_(option
     video.width = options.record_width;
     video.height = options.record_height;
     video.lockstep = options.speed <= 0.0;
+    if (!video.lockstep) video.buffer_frames = static_cast<std::size_t>(options.record_fps * kPacedVideoBufferS);
     video_ = std::make_unique<VideoRecorder>(mc.simulation(), mc.machine(), video);
     mc.loop().add_observer(*video_);
   }
@@ -31,6 +32,11 @@ RunStats SimTools::run(const RunOptions& run_options, const std::atomic<bool>& s
 bool SimTools::finish(std::FILE* out, std::FILE* err) {
   bool ok = true;
   if (video_) {
+    if (const std::size_t queued = video_->queued_frames(); queued > 0) {
+      std::fprintf(out, "video: rendering the last %zu frames buffered during the run (%.1f s of video)...\n", queued,
+                   static_cast<double>(queued) / options_.record_fps);
+      std::fflush(out);
+    }
     const VideoResult video = video_->finish();
     if (video.ok) {
       std::fprintf(out, "video: %llu frames at %g fps (%llu repeated because rendering fell behind) written to %s\n",

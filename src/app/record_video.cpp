@@ -1,5 +1,6 @@
 #include "app/record_video.hpp"
 
+#include <algorithm>
 #include <memory>
 #include <vector>
 
@@ -10,7 +11,11 @@
 namespace cerebellum {
 
 VideoRecorder::VideoRecorder(const Simulation& simulation, const HighLevelMachine& machine, const VideoOptions& options)
-    : options_(options), simulation_(simulation), capture_(simulation, machine), staging_(capture_.sized_snapshot()) {
+    : options_(options),
+      simulation_(simulation),
+      capture_(simulation, machine),
+      staging_(capture_.sized_snapshot()),
+      slots_(std::max<std::size_t>(1, options.buffer_frames)) {
   for (Slot& slot : slots_) slot.snapshot = capture_.sized_snapshot();
   std::promise<void> ready;
   std::future<void> started = ready.get_future();
@@ -40,12 +45,12 @@ void VideoRecorder::on_cycle(const CycleRecord& record) {
 
 void VideoRecorder::enqueue(std::uint64_t frame) {
   std::unique_lock<std::mutex> lock(mutex_);
-  if (count_ == kSlots) {
+  if (count_ == slots_.size()) {
     if (!options_.lockstep || failed_) return;  // skipped: the renderer repeats the previous image
-    slot_freed_.wait(lock, [&] { return count_ < kSlots || failed_; });
+    slot_freed_.wait(lock, [&] { return count_ < slots_.size() || failed_; });
     if (failed_) return;
   }
-  Slot& slot = slots_[(head_ + count_) % kSlots];
+  Slot& slot = slots_[(head_ + count_) % slots_.size()];
   slot.snapshot = staging_;  // same sizes: no allocation
   slot.frame = frame;
   ++count_;
@@ -96,7 +101,7 @@ void VideoRecorder::render_thread(std::promise<void>& ready) {
       if (count_ == 0) break;  // closing, and everything queued is written
       snapshot = slots_[head_].snapshot;
       frame = slots_[head_].frame;
-      head_ = (head_ + 1) % kSlots;
+      head_ = (head_ + 1) % slots_.size();
       --count_;
       slot_freed_.notify_one();
     }
@@ -117,6 +122,11 @@ void VideoRecorder::render_thread(std::promise<void>& ready) {
   result.ok = pipe->finish() && !failed;
   std::lock_guard<std::mutex> lock(mutex_);
   result_ = result;
+}
+
+std::size_t VideoRecorder::queued_frames() {
+  std::lock_guard<std::mutex> lock(mutex_);
+  return count_;
 }
 
 VideoResult VideoRecorder::finish() {

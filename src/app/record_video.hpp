@@ -1,10 +1,14 @@
 // `cerebellum sim --record FILE.mp4`: renders the run headlessly (EGL, software OpenGL) in its
 // own thread and pipes the frames to ffmpeg. Frame k shows the first tick at or after k / fps
 // seconds of robot time, so the video plays in real time whatever the loop's speed.
-// The loop thread only copies a snapshot into a free frame slot. When no slot is free:
+// The loop thread only copies a snapshot into a free frame slot (all allocated at start). When no
+// slot is free:
 //  - lockstep (--speed max): the loop waits for a slot, so every frame is rendered;
 //  - paced: the frame is skipped and the previous image repeated, so the loop is never stalled
 //    and the video keeps its timing (counted as repeated frames).
+// Software rendering of a 1280x720 frame takes longer than a 30 fps frame period, so a paced run
+// buffers up to `buffer_frames` snapshots (kPacedVideoBufferS of video, a few hundred bytes each)
+// and finish() renders what is left after the run.
 #pragma once
 
 #include <array>
@@ -14,6 +18,7 @@
 #include <mutex>
 #include <string>
 #include <thread>
+#include <vector>
 
 #include "app/viewer_snapshot.hpp"
 #include "cycle/cycle_observer.hpp"
@@ -23,10 +28,14 @@ namespace cerebellum {
 struct VideoOptions {
   std::string path;
   double fps = 30.0;
-  int width = 640;
-  int height = 480;
-  bool lockstep = false;  // the loop runs at full speed: wait for frame slots instead of skipping
+  int width = 1280;
+  int height = 720;
+  bool lockstep = false;          // the loop runs at full speed: wait for frame slots instead of skipping
+  std::size_t buffer_frames = 4;  // frame slots between the loop and the renderer
 };
+
+// a paced run buffers this much video (10 minutes: about 10 MB of snapshots at 30 fps)
+inline constexpr double kPacedVideoBufferS = 600.0;
 
 struct VideoResult {
   std::uint64_t frames = 0;    // frames in the file
@@ -46,9 +55,10 @@ class VideoRecorder final : public CycleObserver {
   void on_cycle(const CycleRecord& record) override;
   // renders what is queued, closes the file; idempotent
   VideoResult finish();
+  // snapshots waiting for the renderer (any thread)
+  std::size_t queued_frames();
 
  private:
-  static constexpr std::size_t kSlots = 4;
   struct Slot {
     SimSnapshot snapshot;
     std::uint64_t frame = 0;
@@ -70,7 +80,7 @@ class VideoRecorder final : public CycleObserver {
   std::mutex mutex_;
   std::condition_variable frame_queued_;
   std::condition_variable slot_freed_;
-  std::array<Slot, kSlots> slots_;
+  std::vector<Slot> slots_;
   std::size_t head_ = 0;
   std::size_t count_ = 0;
   bool closing_ = false;

@@ -64,7 +64,7 @@ std::string sim_usage() {
          "  --viewer-screenshot FILE.png  save the viewer's last frame when the run ends\n"
          "  --record FILE.mp4  render the run headlessly into a video (ffmpeg); not with --viewer\n"
          "  --record-fps F     video frames per second of robot time (0 < F <= 240, default 30)\n"
-         "  --record-size WxH  video size in pixels, even numbers, 16x16 to 3840x2160 (default 640x480)\n"
+         "  --record-size WxH  video size in pixels, even numbers, 16x16 to 3840x2160 (default 1280x720)\n"
          "  --telemetry FILE.csv  log time, mode, estimated and true velocity, height, torques, temperatures\n"
          "  --telemetry-rate HZ   rows per second of robot time (HZ > 0, default 100)\n";
 }

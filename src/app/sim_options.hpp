@@ -18,8 +18,8 @@ struct SimOptions {
   std::string viewer_screenshot_path;  // the viewer's last frame, as .png
   std::string record_path;             // headless video of the run
   double record_fps = 30.0;
-  int record_width = 640;
-  int record_height = 480;
+  int record_width = 1280;
+  int record_height = 720;
   std::string telemetry_path;  // CSV
   double telemetry_rate_hz = 100.0;
 };

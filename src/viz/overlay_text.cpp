@@ -36,15 +36,16 @@ OverlayText status_overlay(const SimSnapshot& snapshot, const std::string& run_s
   const auto& est = snapshot.estimated_velocity_body;
   const auto& truth = snapshot.true_velocity_body;
   const auto& cmd = snapshot.commanded_velocity;
+  // four short rows: small enough for a corner of the picture, away from the followed robot
   OverlayText text;
-  text.titles = "time\nmode\ngait\nswitch\nvx vy wz commanded\nvx vy wz estimated\nvx vy wz truth\nheight est / truth";
-  text.values = format("%.2f s", snapshot.time_s, 0, 0) + "\n" + std::to_string(snapshot.status.mode) + " " +
-                mode_name(snapshot.status.mode) + "\n" + std::to_string(snapshot.status.gait_id) + "\n" +
-                switch_status_name(snapshot.status.switch_status) + "\n" +
-                format("%+.2f %+.2f m/s %+.2f rad/s", cmd[0], cmd[1], cmd[2]) + "\n" +
-                format("%+.2f %+.2f m/s %+.2f rad/s", est[0], est[1], est[2]) + "\n" +
-                format("%+.2f %+.2f m/s %+.2f rad/s", truth[0], truth[1], truth[2]) + "\n" +
-                format("%.3f / %.3f m", snapshot.estimated_height_m, snapshot.true_height_m, 0);
+  text.titles = format("%.2f s", snapshot.time_s, 0, 0) + "\ncommanded\nestimated\ntruth";
+  text.values = "mode " + std::to_string(snapshot.status.mode) + " " + mode_name(snapshot.status.mode) + ", gait " +
+                std::to_string(snapshot.status.gait_id) + ", " + switch_status_name(snapshot.status.switch_status) +
+                "\n" + format("vx %+.2f  vy %+.2f m/s  wz %+.2f rad/s", cmd[0], cmd[1], cmd[2]) + "\n" +
+                format("vx %+.2f  vy %+.2f m/s  wz %+.2f rad/s", est[0], est[1], est[2]) +
+                format("  height %.3f m", snapshot.estimated_height_m, 0, 0) + "\n" +
+                format("vx %+.2f  vy %+.2f m/s  wz %+.2f rad/s", truth[0], truth[1], truth[2]) +
+                format("  height %.3f m", snapshot.true_height_m, 0, 0);
   if (!run_state.empty()) {
     text.titles += "\nrun";
     text.values += "\n" + run_state;

@@ -27,8 +27,8 @@ TEST(SimToolOptions, DefaultsAndValues) {
   EXPECT_FALSE(defaults.viewer);
   EXPECT_TRUE(defaults.record_path.empty());
   EXPECT_EQ(defaults.record_fps, 30.0);
-  EXPECT_EQ(defaults.record_width, 640);
-  EXPECT_EQ(defaults.record_height, 480);
+  EXPECT_EQ(defaults.record_width, 1280);
+  EXPECT_EQ(defaults.record_height, 720);
   EXPECT_EQ(defaults.telemetry_rate_hz, 100.0);
 
   const SimOptions o = parse_sim_options({"--record", "run.mp4", "--record-fps", "24", "--record-size", "320x240",
