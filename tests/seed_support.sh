@@ -44,3 +44,15 @@ start_sim() {
   kill "$sim_pid" 2>/dev/null
   exit 1
 }
+
+# start_truth_watch <log file> <generated python types dir>: watches the simulation's ground truth
+# (channel sim_truth) in the background until the simulation stops; sets truth_pid
+start_truth_watch() {
+  PYTHONPATH="$2" /usr/bin/python3 "$(dirname "${BASH_SOURCE[0]}")/../scripts/sim_truth_watch.py" > "$1" 2>&1 &
+  truth_pid=$!
+}
+
+# truth_value <log file> <key>: a final value of scripts/sim_truth_watch.py's summary
+truth_value() {
+  sed -n "s/^$2=//p" "$1"
+}

@@ -3,9 +3,11 @@
 # time, compiled unmodified against our custom_interface.hpp and libcyber_dog_motor_sdk the way a
 # user's build would, and run against `cerebellum sim --speed 1` (damper at start, motor SDK on).
 # The example activates (2 s), lays the legs out (3 s), stands up (3 s) and holds until Ctrl-C;
-# the MC's final trunk height (simulator truth) shows that it stood. Run inside scripts/netns_run.sh.
+# the simulation's ground truth (channel sim_truth) shows that it stood. Run inside
+# scripts/netns_run.sh.
 #   seed_motor_ctrl_example.sh <cerebellum> <work dir> <seeds dir> <c++ compiler>
 #                              <include dirs, ':'-separated> <libcyber_dog_motor_sdk.so>
+#                              <generated python types dir>
 set -u
 cerebellum=$1
 work=$2
@@ -13,6 +15,7 @@ seeds=$3
 cxx=$4
 include_dirs=$5
 sdk_library=$6
+python_types=$7
 source "$(dirname "$0")/../../seed_support.sh"
 seed=$(seed_file "$seeds") || exit $?
 rm -rf "$work" && mkdir -p "$work"
@@ -35,6 +38,7 @@ echo "compiled unmodified"
 
 printf 'mc:\n  startup: damper\nmotor_sdk:\n  enabled: true\n' > "$work/sim.yaml"
 # 12 s of robot time at real-time speed: start-up, activation 2 s, 3 s to lying, 3 s up, holding
+start_truth_watch "$work/truth.log" "$python_types"
 start_sim "$work/sim.log" "$cerebellum" sim --speed 1 --duration 12 --config "$work/sim.yaml"
 sim=$sim_pid
 "$work/seed_example_motor_ctrl" > "$work/example.log" 2>&1 &
@@ -45,6 +49,7 @@ sim_status=$?
 kill -INT "$example" 2>/dev/null
 wait "$example"
 example_status=$?
+wait "$truth_pid"  # ends once the simulation's truth has gone quiet
 echo "--- example output (first lines)"
 head -12 "$work/example.log"
 echo "--- MC log (joint lines left out)"
@@ -56,10 +61,17 @@ grep -q "^err_flag " "$work/example.log" || { echo "WRONG: the example never pri
 if ! grep -q "motor sdk: motor mode yes, err_flag 0x00" "$work/sim.log"; then
   echo "WRONG: the MC did not end in motor mode with err_flag 0"; fail=1
 fi
-height=$(sed -n 's/.*trunk height \([0-9.]*\) m (simulator truth).*/\1/p' "$work/sim.log")
-if [[ -z "$height" ]] || ! awk -v h="$height" 'BEGIN {exit !(h >= 0.2)}'; then
-  echo "WRONG: final trunk height '${height}' m, the robot did not stand (>= 0.2 m)"; fail=1
+echo "--- ground truth"
+head -1 "$work/truth.log"
+height=$(truth_value "$work/truth.log" final_height_m)
+tilt=$(truth_value "$work/truth.log" final_tilt_deg)
+feet=$(truth_value "$work/truth.log" final_feet_down)
+lowest=$(truth_value "$work/truth.log" lowest_height_m)
+if [[ -z "$height" ]] || ! awk -v h="$height" -v t="$tilt" 'BEGIN {exit !(h >= 0.2 && t < 10)}' ||
+   [[ "$feet" != 1111 ]]; then
+  echo "WRONG: final trunk height '${height}' m, tilt '${tilt}' deg, feet down '${feet}': the robot did not stand"
+  fail=1
 else
-  echo "seen: the robot stands, trunk height $height m (simulator truth)"
+  echo "seen: the robot stands, trunk height $height m, tilt $tilt deg, four feet down (lowest $lowest m; sim_truth)"
 fi
 exit "$fail"
