@@ -5,6 +5,7 @@
 
 #include "app/cmd_command.hpp"
 #include "app/log_command.hpp"
+#include "app/push_command.hpp"
 #include "app/sim_command.hpp"
 
 namespace {
@@ -16,7 +17,8 @@ constexpr const char* kUsage =
     "  cmd    send a high-level command to a running MC and keep it alive (cerebellum cmd --help)\n"
     "  status print the MC's high-level responses and odometry (cerebellum status --help)\n"
     "  log    record the interface's LCM traffic, one lcm-logger per port (cerebellum log --help)\n"
-    "  replay play a recorded log back on its ports (cerebellum replay --help)\n";
+    "  replay play a recorded log back on its ports (cerebellum replay --help)\n"
+    "  push   push the simulated robot's trunk with a force (cerebellum push --help)\n";
 
 }  // namespace
 
@@ -32,7 +34,8 @@ int main(int argc, char** argv) {
   if (args[0] == "status") return cerebellum::run_status_command(rest);
   if (args[0] == "log") return cerebellum::run_log_command(rest);
   if (args[0] == "replay") return cerebellum::run_replay_command(rest);
-  std::fprintf(stderr, "cerebellum: unknown command '%s' (accepted: sim, cmd, status, log, replay)\n%s",
+  if (args[0] == "push") return cerebellum::run_push_command(rest);
+  std::fprintf(stderr, "cerebellum: unknown command '%s' (accepted: sim, cmd, status, log, replay, push)\n%s",
                args[0].c_str(), kUsage);
   return 2;
 }

@@ -192,8 +192,9 @@ McConfig load_config(const std::string& path) {
   }
   McConfig config = default_config();
   if (root.IsNull()) return config;
-  const SectionReader top(root, path, "<top>",
-                          {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk", "highlevel", "sim_truth"});
+  const SectionReader top(
+      root, path, "<top>",
+      {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk", "highlevel", "sim_truth", "sim_command"});
   const fs::path base_dir = fs::absolute(path).parent_path();
 
   if (root["mc"]) {
@@ -247,6 +248,9 @@ McConfig load_config(const std::string& path) {
   if (root["sim_truth"]) {
     SectionReader(root["sim_truth"], path, "sim_truth", {"rate_hz"})
         .number("rate_hz", config.sim_truth.rate_hz, 0.0, kSimTruthRateMaxHz);
+  }
+  if (root["sim_command"]) {
+    SectionReader(root["sim_command"], path, "sim_command", {"enabled"}).flag("enabled", config.sim_command.enabled);
   }
   return config;
 }

@@ -9,6 +9,7 @@
 #include "control/stand_up_controller.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
+#include "io/lcm_sim_control/sim_control_config.hpp"
 #include "io/lcm_sim_truth/sim_truth_config.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
 #include "modes/locomotion_stand.hpp"
@@ -33,7 +34,8 @@ struct McConfig {
   ShmLowLevelConfig shm;
   MotorSdkConfig motor_sdk;
   HighLevelLcmConfig highlevel;
-  SimTruthConfig sim_truth;  // simulation only
+  SimTruthConfig sim_truth;      // simulation only
+  SimControlConfig sim_command;  // simulation only
 };
 
 // raised for a bad file, key or value; the message names the file, the key and what is accepted

@@ -25,7 +25,10 @@ std::string served_endpoints(const McConfig& config) {
   if (config.sim_truth.rate_hz > 0.0) {
     char rate[32];
     std::snprintf(rate, sizeof(rate), "%g Hz", config.sim_truth.rate_hz);
-    add(std::string("ground truth: sim_truth on ") + config.highlevel.odometry_url + " at " + rate);
+    add(std::string("simulation: sim_truth at ") + rate + " on " + config.highlevel.odometry_url);
+  }
+  if (config.sim_command.enabled) {
+    add("sim_command (cerebellum push) on " + config.highlevel.odometry_url);
   }
   return out.empty() ? "no client interface (the configuration turns every one off)" : out;
 }

@@ -16,6 +16,7 @@
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
 #include "io/lcm_motor_sdk/lcm_state_feedback.hpp"
+#include "io/lcm_sim_control/sim_control_adapter.hpp"
 #include "io/lcm_sim_truth/sim_truth_publisher.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_source.hpp"
 
@@ -74,6 +75,9 @@ int run_sim_command(const std::vector<std::string>& args) {
       sim_truth.emplace(mc.simulation(), config.highlevel.odometry_url, config.sim_truth, config.loop_period_s);
       loop.add_observer(*sim_truth);
     }
+    // the simulation's own control channel (pushes): on the odometry URL with sim_truth
+    std::optional<SimControlAdapter> sim_control;
+    if (config.sim_command.enabled) sim_control.emplace(mc.simulation(), config.highlevel.odometry_url, stderr);
     SimTools tools(mc, options);
 
     char speed[32] = "max";
@@ -88,6 +92,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     if (highlevel) highlevel->finish(stdout);
     if (state_feedback) state_feedback->finish();
     if (sim_truth) sim_truth->finish();
+    if (sim_control) sim_control->finish(stderr);
     std::printf(
         "cerebellum stopped: %.2f s robot time in %.2f s wall time (%.1fx real time), %llu ticks, "
         "%llu late substeps, trunk height %.3f m (simulator truth)\n",

@@ -111,12 +111,12 @@ void MujocoBackend::apply_motor_drivers() {
 void MujocoBackend::advance(double period_s) {
   const double dt = model_->opt.timestep;
   const long steps = std::max(1L, std::lround(period_s / dt));
-  take_push_request();
+  take_disturbance_requests();
   for (long s = 0; s < steps; ++s) {
     // the drivers and the push evaluate their laws on the state of this physics step
     mj_step1(model_, data_);
     apply_motor_drivers();
-    apply_push();
+    apply_disturbances();
     mj_step2(model_, data_);
     for (std::size_t i = 0; i < kNumJoints; ++i) thermal_[i].update(applied_torque_[i], dt);
   }
@@ -176,21 +176,38 @@ void MujocoBackend::request_push(const PushRequest& request) {
   posted_push_ = request;
 }
 
-void MujocoBackend::take_push_request() {
+void MujocoBackend::request_force_pulse(const ForcePulse& pulse) {
+  std::lock_guard<std::mutex> lock(push_mutex_);
+  posted_pulse_ = pulse;
+  ++posted_pulses_;
+}
+
+void MujocoBackend::take_disturbance_requests() {
   // never wait for the poster: a busy mailbox is read at the next advance
   if (!push_mutex_.try_lock()) return;
   push_ = posted_push_;
+  if (posted_pulses_ != taken_pulses_) {
+    taken_pulses_ = posted_pulses_;
+    pulse_ = posted_pulse_;
+    pulse_end_s_ = data_->time + pulse_.duration_s;
+  }
   push_mutex_.unlock();
 }
 
-void MujocoBackend::apply_push() {
-  // nothing to do without a push, and once the force of the last one is lifted
-  if (!push_.active && !pushing_) return;
+void MujocoBackend::apply_disturbances() {
+  const bool pulse_on = data_->time < pulse_end_s_ - 1e-9;
+  // nothing to do without a push or a pulse, and once the force of the last one is lifted
+  if (!push_.active && !pushing_ && !pulse_on && !pulsing_) return;
   const double* com = data_->xipos + 3 * trunk_body_;
   const std::array<double, 3> com_world{com[0], com[1], com[2]};
   const std::array<double, 3> velocity_world{data_->qvel[0], data_->qvel[1], data_->qvel[2]};
-  set_external_force(push_force(push_, com_world, velocity_world, push_spring_));
+  std::array<double, 3> force = push_force(push_, com_world, velocity_world, push_spring_);
+  if (pulse_on) {
+    for (int k = 0; k < 3; ++k) force[k] += pulse_.force_n[k];
+  }
+  set_external_force(force);
   pushing_ = push_.active;
+  pulsing_ = pulse_on;
 }
 
 }  // namespace cerebellum

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <array>
+#include <cstdint>
 #include <memory>
 #include <mutex>
 #include <random>
@@ -52,6 +53,7 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   void set_joint_positions(const JointArray<double>& q) override;
   void set_external_force(const std::array<double, 3>& force_n) override;
   void request_push(const PushRequest& request) override;
+  void request_force_pulse(const ForcePulse& pulse) override;
 
   double physics_timestep_s() const override;
   const mjModel_* model() const override { return model_; }
@@ -59,10 +61,11 @@ class MujocoBackend final : public RobotBackend, public Simulation {
 
  private:
   void apply_motor_drivers();
-  // the newest posted push request, unless the poster holds the mailbox (then the last one stays)
-  void take_push_request();
-  // the push's force on the state of this physics step (after mj_step1)
-  void apply_push();
+  // the newest posted push request and force pulse, unless the poster holds the mailbox (then
+  // they are taken at the next advance)
+  void take_disturbance_requests();
+  // the push's and the pulse's force on the state of this physics step (after mj_step1)
+  void apply_disturbances();
 
   MujocoBackendConfig config_;
   mjModel_* model_ = nullptr;
@@ -84,10 +87,16 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   // push mailbox: written by any thread, read when the robot steps
   std::mutex push_mutex_;
   PushRequest posted_push_;
+  ForcePulse posted_pulse_;
+  std::uint64_t posted_pulses_ = 0;  // pulses posted so far: a new one is taken once
   // the stepping thread's push
   PushRequest push_;
   PushSpring push_spring_;
   bool pushing_ = false;  // the push's force is on the trunk
+  ForcePulse pulse_;
+  std::uint64_t taken_pulses_ = 0;
+  double pulse_end_s_ = -1.0;  // simulated time the pulse ends
+  bool pulsing_ = false;       // the pulse's force is on the trunk
 };
 
 }  // namespace cerebellum

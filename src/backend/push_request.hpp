@@ -19,6 +19,13 @@ struct PushSpring {
   double max_force_n = 40.0;
 };
 
+// A constant force on the trunk's centre of mass (world frame) for a span of simulated time: the
+// `cerebellum push` verb's disturbance, for people and tests. A new pulse replaces a running one.
+struct ForcePulse {
+  std::array<double, 3> force_n{};
+  double duration_s = 0.0;
+};
+
 // world-frame force on the trunk: stiffness * (target - com) - damping * com_velocity, its
 // magnitude limited to max_force_n; zero when the request is not active
 std::array<double, 3> push_force(const PushRequest& request, const std::array<double, 3>& com_world,

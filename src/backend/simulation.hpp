@@ -45,6 +45,9 @@ class Simulation {
   // any thread: the newest push request (the viewer's drag); the simulation turns it into a force
   // on the trunk at its own physics steps, and lifts the force once the request is inactive
   virtual void request_push(const PushRequest& request) = 0;
+  // any thread: a force pulse on the trunk COM from the simulation's next step on, for
+  // pulse.duration_s of simulated time, added to the push; replaces a pulse still running
+  virtual void request_force_pulse(const ForcePulse& pulse) = 0;
 
   // for rendering and inspection: read only, in the thread that steps the robot (or while it
   // does not step)

@@ -81,5 +81,51 @@ TEST(SimulationPush, RequestPostedFromAnotherThreadActsAtTheNextStep) {
   EXPECT_GT(trunk_force(simulation)[1], 1.0);
 }
 
+TEST(SimulationForcePulse, PushesWithItsForceForItsSimulatedDurationOnTopOfThePush) {
+  MujocoBackend backend(testing::sim_config(1.0));
+  Simulation& simulation = backend;
+  const double step_s = simulation.physics_timestep_s();
+  std::thread tool([&] { simulation.request_force_pulse({{30.0, -20.0, 5.0}, 10 * step_s}); });
+  tool.join();
+  for (int step = 0; step < 10; ++step) {
+    backend.advance(step_s);
+    EXPECT_EQ(trunk_force(simulation), (std::array<double, 3>{30.0, -20.0, 5.0})) << step;
+  }
+  backend.advance(step_s);  // over: the force is lifted
+  EXPECT_EQ(trunk_force(simulation), (std::array<double, 3>{0.0, 0.0, 0.0}));
+
+  // with the viewer's push at the same time: the sum
+  simulation.request_push({true, {1.0, 0.0, 1.0}});
+  backend.advance(step_s);
+  const std::array<double, 3> push_only = trunk_force(simulation);
+  simulation.request_force_pulse({{0.0, 0.0, 40.0}, 1.0});
+  backend.advance(step_s);
+  EXPECT_NEAR(trunk_force(simulation)[2] - push_only[2], 40.0, 1.0);  // the spring moved a little
+}
+
+TEST(SimulationForcePulse, MovesTheRobotsCentreOfMassAsNewtonSays) {
+  // in free fall from 1 m (no contact for 0.4 s) only gravity and the pulse act sideways:
+  // y = F t^2 / (2 M) during the pulse, then on at v = F T / M
+  MujocoBackend backend(testing::sim_config(1.0));
+  Simulation& simulation = backend;
+  double total_mass_kg = 0.0;
+  for (int body = 0; body < simulation.model()->nbody; ++body) total_mass_kg += simulation.model()->body_mass[body];
+  const int trunk = mj_name2id(simulation.model(), mjOBJ_BODY, "trunk");
+  const auto com_y = [&] {
+    backend.read();  // brings the derived quantities (subtree COM) to the current state
+    return simulation.data()->subtree_com[3 * trunk + 1];
+  };
+  const double y0 = com_y();
+  const double force_n = 50.0;
+  const double pulse_s = 0.1;
+  simulation.request_force_pulse({{0.0, force_n, 0.0}, pulse_s});
+  backend.advance(pulse_s);
+  const double expected_after_pulse_m = force_n * pulse_s * pulse_s / (2.0 * total_mass_kg);
+  EXPECT_NEAR(com_y() - y0, expected_after_pulse_m, 0.03 * expected_after_pulse_m);
+  backend.advance(0.1);
+  const double expected_later_m = expected_after_pulse_m + force_n * pulse_s / total_mass_kg * 0.1;
+  EXPECT_NEAR(com_y() - y0, expected_later_m, 0.03 * expected_later_m);
+}
+
 }  // namespace
 }  // namespace cerebellum

@@ -1,0 +1,141 @@
+#include "app/push_command.hpp"
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+#include <random>
+#include <stdexcept>
+
+#include "io/lcm_common/lcm_url.hpp"
+#include "io/lcm_highlevel/lcm_highlevel_config.hpp"
+#include "io/lcm_sim_control/sim_command_text.hpp"
+#include "io/lcm_sim_control/sim_control_adapter.hpp"
+#include "sim_command_lcmt.hpp"
+#include "sim_command_result_lcmt.hpp"
+
+namespace cerebellum {
+namespace {
+
+struct PushOptions {
+  ForcePulse pulse{{0.0, 0.0, 0.0}, 0.2};
+  std::string url = HighLevelLcmConfig{}.odometry_url;  // where the simulation serves sim_command
+  double timeout_s = 2.0;
+  bool help = false;
+};
+
+std::string usage() {
+  return "usage: cerebellum push FX FY [FZ] [--duration S] [--url URL] [--timeout S]\n"
+         "Pushes the simulated robot: a force on the trunk's centre of mass, FX FY FZ in newtons in the\n"
+         "world frame, for S seconds of simulated time (the simulation's own channel sim_command; a\n"
+         "real robot has none). Exit status 0 when the running simulation took it.\n"
+         "  --duration S  (0, 10] s of simulated time (default 0.2)\n"
+         "  --url URL     the simulation's odometry URL (default " +
+         HighLevelLcmConfig{}.odometry_url +
+         ")\n"
+         "  --timeout S   wall seconds to wait for the simulation's answer (default 2)\n"
+         "The force's magnitude is at most 500 N. Example: a 20 N s shove from the left,\n"
+         "  cerebellum push 0 -200 --duration 0.1\n";
+}
+
+double number(const std::string& option, const std::string& text) {
+  try {
+    std::size_t used = 0;
+    const double value = std::stod(text, &used);
+    if (used == text.size() && std::isfinite(value)) return value;
+  } catch (const std::exception&) {
+  }
+  throw std::invalid_argument(option + " must be a finite number, got '" + text + "'");
+}
+
+PushOptions parse(const std::vector<std::string>& args) {
+  PushOptions options;
+  std::vector<double> force;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    const auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw std::invalid_argument(arg + " needs a value");
+      return args[++i];
+    };
+    if (arg == "--help" || arg == "-h") {
+      options.help = true;
+    } else if (arg == "--duration") {
+      options.pulse.duration_s = number(arg, value());
+    } else if (arg == "--url") {
+      options.url = value();
+      if (const std::string problem = lcm_url_problem(options.url); !problem.empty()) {
+        throw std::invalid_argument("--url: " + problem);
+      }
+    } else if (arg == "--timeout") {
+      options.timeout_s = number(arg, value());
+      if (!(options.timeout_s > 0.0 && options.timeout_s <= 60.0)) {
+        throw std::invalid_argument("--timeout must be in (0, 60] s, got " + args[i]);
+      }
+    } else if (arg.size() > 2 && arg.compare(0, 2, "--") == 0) {
+      throw std::invalid_argument("unknown option '" + arg + "' (accepted: --duration, --url, --timeout)");
+    } else {
+      if (force.size() == 3) throw std::invalid_argument("at most three force components, FX FY FZ");
+      force.push_back(number("force component " + std::to_string(force.size() + 1), arg));
+    }
+  }
+  if (options.help) return options;
+  if (force.size() < 2) throw std::invalid_argument("give at least FX and FY (newtons)");
+  for (std::size_t k = 0; k < force.size(); ++k) options.pulse.force_n[k] = force[k];
+  // the simulation's own rules, applied before sending
+  if (const SimCommand check = parse_sim_command(push_command_text(options.pulse)); !check.push) {
+    throw std::invalid_argument(check.error);
+  }
+  return options;
+}
+
+}  // namespace
+
+int run_push_command(const std::vector<std::string>& args) {
+  PushOptions options;
+  try {
+    options = parse(args);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "cerebellum push: %s\n%s", e.what(), usage().c_str());
+    return 2;
+  }
+  if (options.help) {
+    std::fputs(usage().c_str(), stdout);
+    return 0;
+  }
+  try {
+    std::unique_ptr<lcm::LCM> lcm = open_lcm_url(options.url, "push");
+    std::optional<sim_command_result_lcmt> answer;
+    std::random_device entropy;
+    const std::int64_t request_id = (static_cast<std::int64_t>(entropy()) << 31) ^ entropy();
+    struct Handler {
+      std::int64_t id;
+      std::optional<sim_command_result_lcmt>* answer;
+      void on_result(const lcm::ReceiveBuffer*, const std::string&, const sim_command_result_lcmt* result) {
+        if (result->request_id == id) *answer = *result;
+      }
+    } handler{request_id, &answer};
+    lcm->subscribe(kSimCommandResultChannel, &Handler::on_result, &handler);
+    sim_command_lcmt command;
+    command.request_id = request_id;
+    command.command = push_command_text(options.pulse);
+    lcm->publish(kSimCommandChannel, &command);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(options.timeout_s);
+    while (!answer && std::chrono::steady_clock::now() < deadline) handle_pending(*lcm, 50);
+    if (!answer) {
+      std::fprintf(stderr,
+                   "cerebellum push: no simulation answered on %s within %g s (is `cerebellum sim` running, in "
+                   "this network namespace?)\n",
+                   options.url.c_str(), options.timeout_s);
+      return 1;
+    }
+    std::printf("%s\n", answer->reason.c_str());
+    return answer->result == 0 ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cerebellum push: %s\n", e.what());
+    return 1;
+  }
+}
+
+}  // namespace cerebellum

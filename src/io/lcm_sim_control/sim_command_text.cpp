@@ -1,0 +1,83 @@
+#include "io/lcm_sim_control/sim_command_text.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <sstream>
+#include <vector>
+
+namespace cerebellum {
+namespace {
+
+std::string format_number(double value) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.17g", value);
+  return text;
+}
+
+// a whole word as a finite number, or nullopt
+std::optional<double> number(const std::string& word) {
+  try {
+    std::size_t used = 0;
+    const double value = std::stod(word, &used);
+    if (used != word.size() || !std::isfinite(value)) return std::nullopt;
+    return value;
+  } catch (const std::exception&) {
+    return std::nullopt;
+  }
+}
+
+}  // namespace
+
+SimCommand parse_sim_command(const std::string& text) {
+  SimCommand command;
+  if (text.size() > kSimCommandTextMaxBytes) {
+    command.error = "command longer than " + std::to_string(kSimCommandTextMaxBytes) + " bytes";
+    return command;
+  }
+  std::istringstream in(text);
+  std::vector<std::string> words;
+  for (std::string word; in >> word;) words.push_back(word);
+  if (words.empty()) {
+    command.error = "empty command (accepted: push FX FY FZ DURATION_S)";
+    return command;
+  }
+  if (words[0] != "push") {
+    command.error = "unknown command '" + words[0].substr(0, 32) + "' (accepted: push FX FY FZ DURATION_S)";
+    return command;
+  }
+  if (words.size() != 5) {
+    command.error = "push takes 4 numbers, FX FY FZ (N) and DURATION_S, got " + std::to_string(words.size() - 1);
+    return command;
+  }
+  static const char* const kNames[] = {"FX", "FY", "FZ", "DURATION_S"};
+  double values[4] = {};
+  for (int k = 0; k < 4; ++k) {
+    const std::optional<double> value = number(words[k + 1]);
+    if (!value) {
+      command.error =
+          std::string("push ") + kNames[k] + " must be a finite number, got '" + words[k + 1].substr(0, 32) + "'";
+      return command;
+    }
+    values[k] = *value;
+  }
+  const double magnitude_n = std::sqrt(values[0] * values[0] + values[1] * values[1] + values[2] * values[2]);
+  if (magnitude_n > kPushForceMaxN) {
+    command.error =
+        "push force " + format_number(magnitude_n) + " N is above the limit of " + format_number(kPushForceMaxN) + " N";
+    return command;
+  }
+  if (!(values[3] > 0.0 && values[3] <= kPushDurationMaxS)) {
+    command.error =
+        "push DURATION_S must be in (0, " + format_number(kPushDurationMaxS) + "] s, got " + words[4].substr(0, 32);
+    return command;
+  }
+  command.push = ForcePulse{{values[0], values[1], values[2]}, values[3]};
+  return command;
+}
+
+std::string push_command_text(const ForcePulse& pulse) {
+  return "push " + format_number(pulse.force_n[0]) + " " + format_number(pulse.force_n[1]) + " " +
+         format_number(pulse.force_n[2]) + " " + format_number(pulse.duration_s);
+}
+
+}  // namespace cerebellum
