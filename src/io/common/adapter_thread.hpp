@@ -4,6 +4,8 @@
 #pragma once
 
 #include <atomic>
+#include <chrono>
+#include <cstddef>
 #include <functional>
 #include <thread>
 
@@ -24,6 +26,16 @@ class AdapterThread {
       if (drain) drain();
     });
   }
+  // the thread as the publisher of a ring the loop thread fills: each step publishes everything
+  // queued, or naps briefly when nothing is (a tick is 2 ms); stopping publishes what is left
+  template <typename Ring, typename Publish>
+  void start_publishing(Ring& ring, Publish publish) {
+    start(
+        [&ring, publish] {
+          if (publish_queued(ring, publish) == 0) std::this_thread::sleep_for(kIdleNap);
+        },
+        [&ring, publish] { publish_queued(ring, publish); });
+  }
   // joins the thread; safe to call twice
   void stop() {
     running_.store(false);
@@ -32,6 +44,18 @@ class AdapterThread {
   bool running() const { return running_.load(); }
 
  private:
+  static constexpr std::chrono::microseconds kIdleNap{500};
+
+  template <typename Ring, typename Publish>
+  static std::size_t publish_queued(Ring& ring, const Publish& publish) {
+    std::size_t published = 0;
+    while (auto item = ring.try_pop()) {
+      publish(*item);
+      ++published;
+    }
+    return published;
+  }
+
   std::atomic<bool> running_{false};
   std::thread thread_;
 };

@@ -3,9 +3,7 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
-#include <thread>
 
 #include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_motor_sdk/robot_state_messages.hpp"
@@ -16,8 +14,6 @@ namespace {
 constexpr const char* kLegControlDataChannel = "leg_control_data";
 constexpr const char* kStateEstimatorChannel = "state_estimator";
 constexpr const char* kInterfaceName = "state feedback";
-// with nothing queued the thread naps this long; a tick is 2 ms
-constexpr std::chrono::microseconds kIdleNap{500};
 
 }  // namespace
 
@@ -27,7 +23,7 @@ LcmStateFeedback::LcmStateFeedback(const std::string& leg_control_url, const std
       estimator_lcm_(open_lcm_url(estimator_url, kInterfaceName)),
       ticks_per_message_(static_cast<std::uint64_t>(std::max(1.0, std::round(kStateFeedbackPeriodS / loop_period_s)))),
       motor_sdk_(motor_sdk) {
-  thread_.start([this] { step(); }, [this] { drain(); });
+  thread_.start_publishing(feedback_, [this](const Feedback& feedback) { publish(feedback); });
 }
 
 LcmStateFeedback::~LcmStateFeedback() { thread_.stop(); }
@@ -38,19 +34,6 @@ void LcmStateFeedback::on_cycle(const CycleRecord& record) {
 }
 
 void LcmStateFeedback::finish() { thread_.stop(); }
-
-void LcmStateFeedback::step() {
-  bool any = false;
-  while (std::optional<Feedback> feedback = feedback_.try_pop()) {
-    publish(*feedback);
-    any = true;
-  }
-  if (!any) std::this_thread::sleep_for(kIdleNap);
-}
-
-void LcmStateFeedback::drain() {
-  while (std::optional<Feedback> feedback = feedback_.try_pop()) publish(*feedback);
-}
 
 void LcmStateFeedback::publish(const Feedback& feedback) {
   const leg_control_data_lcmt legs = make_leg_control_data(feedback.state, feedback.command);

@@ -51,8 +51,6 @@ class LcmStateFeedback final : public CycleObserver {
     JointCommand command;
   };
 
-  void step();
-  void drain();
   void publish(const Feedback& feedback);
 
   std::unique_ptr<lcm::LCM> leg_control_lcm_;

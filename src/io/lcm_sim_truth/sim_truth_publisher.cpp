@@ -3,19 +3,14 @@
 #include <lcm/lcm-cpp.hpp>
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <stdexcept>
-#include <thread>
 
 #include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_sim_truth/sim_truth_message.hpp"
 
 namespace cerebellum {
 namespace {
-
-// with nothing queued the thread naps this long; a tick is 2 ms
-constexpr std::chrono::microseconds kIdleNap{500};
 
 std::uint64_t ticks_per_message(double rate_hz, double loop_period_s) {
   if (!(rate_hz > 0.0 && rate_hz <= kSimTruthRateMaxHz)) {
@@ -32,7 +27,7 @@ SimTruthPublisher::SimTruthPublisher(const Simulation& simulation, const std::st
     : simulation_(simulation),
       ticks_per_message_(ticks_per_message(config.rate_hz, loop_period_s)),
       lcm_(open_lcm_url(url, "sim_truth")) {
-  thread_.start([this] { step(); }, [this] { drain(); });
+  thread_.start_publishing(samples_, [this](const Sample& sample) { publish(sample); });
 }
 
 SimTruthPublisher::~SimTruthPublisher() { thread_.stop(); }
@@ -44,19 +39,6 @@ void SimTruthPublisher::on_cycle(const CycleRecord& record) {
 }
 
 void SimTruthPublisher::finish() { thread_.stop(); }
-
-void SimTruthPublisher::step() {
-  bool any = false;
-  while (std::optional<Sample> sample = samples_.try_pop()) {
-    publish(*sample);
-    any = true;
-  }
-  if (!any) std::this_thread::sleep_for(kIdleNap);
-}
-
-void SimTruthPublisher::drain() {
-  while (std::optional<Sample> sample = samples_.try_pop()) publish(*sample);
-}
 
 void SimTruthPublisher::publish(const Sample& sample) {
   const sim_truth_lcmt message = make_sim_truth_message(sample.truth, sample.time_s);

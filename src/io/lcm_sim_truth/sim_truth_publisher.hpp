@@ -46,8 +46,6 @@ class SimTruthPublisher final : public CycleObserver {
     double time_s = 0.0;
   };
 
-  void step();
-  void drain();
   void publish(const Sample& sample);
 
   const Simulation& simulation_;
