@@ -30,12 +30,15 @@ ModeSet::ModeSet(const ModeSetConfig& config)
       recovery_stand_(config.stand_up),
       lifted_(default_lifted_config()),
       walking_(walking_config(config), std::make_unique<qp::GoldfarbIdnaniSolver>()),
+      passive_trot_(walking_, PassiveFollowConfig{}, config.loop_period_s),
       locomotion_(gaits_) {
   // the stepping gaits of the table run on the MPC locomotion controller; the stands on the
   // configured one
   LocomotionGait& stand =
       config.locomotion_stand == LocomotionStand::Mpc ? static_cast<LocomotionGait&>(walking_) : qp_stand_gait_;
   for (const GaitSpec& gait : kGaitTable) gaits_.add(gait.id, gait_steps(gait) ? walking_ : stand);
+  // the passive trot drives the same controller, following pulls on the trunk
+  gaits_.add(kPassiveTrotGaitId, passive_trot_);
 }
 
 void ModeSet::add_to(HighLevelMachine& machine) {

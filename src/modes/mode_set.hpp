@@ -9,6 +9,7 @@
 #include "modes/locomotion_mode.hpp"
 #include "modes/locomotion_stand_gait.hpp"
 #include "modes/passive_modes.hpp"
+#include "modes/passive_trot_gait.hpp"
 #include "modes/pose_control_mode.hpp"
 #include "modes/qp_stand_mode.hpp"
 #include "modes/recovery_stand_mode.hpp"
@@ -35,6 +36,7 @@ class ModeSet {
   const RecoveryStandMode& recovery_stand() const { return recovery_stand_; }
   const WalkingGaits& walking() const { return walking_; }
   const LocomotionStandGait& qp_stand_gait() const { return qp_stand_gait_; }
+  const PassiveTrotGait& passive_trot() const { return passive_trot_; }
   // mode 11's gaits by id
   const GaitRegistry& gaits() const { return gaits_; }
 
@@ -47,6 +49,7 @@ class ModeSet {
   LiftedMode lifted_;
   GaitRegistry gaits_;
   WalkingGaits walking_;
+  PassiveTrotGait passive_trot_;
   LocomotionStandGait qp_stand_gait_;
   LocomotionMode locomotion_;
 };

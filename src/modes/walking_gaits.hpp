@@ -35,6 +35,7 @@ class WalkingGaits final : public LocomotionGait {
   // the MPC failed several times in a row: the robot is being damped down
   bool failed() const { return !controller_.healthy(); }
   const LocomotionController& controller() const { return controller_; }
+  void anchor_position_at_trunk(const RobotState& state) { controller_.anchor_position_at_trunk(state); }
 
  private:
   WalkingGaitsConfig config_;

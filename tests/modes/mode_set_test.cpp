@@ -7,8 +7,9 @@
 namespace cerebellum {
 namespace {
 
-constexpr int kWalkingGaitIds[] = {2, 3, 4, 7, 10, 26, 27};  // docs/locomotion.md
+constexpr int kWalkingGaitIds[] = {2, 3, 7, 10, 26, 27};  // docs/locomotion.md
 constexpr int kStandGaitIds[] = {1, 31};
+constexpr int kPassiveTrotGaitIds[] = {4};
 
 ModeSetConfig config_with(LocomotionStand stand) {
   ModeSetConfig config;
@@ -16,13 +17,15 @@ ModeSetConfig config_with(LocomotionStand stand) {
   return config;
 }
 
-TEST(ModeSet, WalkingGaitsRunOnTheMpcAndTheStandsOnTheConfiguredController) {
+TEST(ModeSet, WalkingGaitsRunOnTheMpcTheStandsOnTheConfiguredControllerAndGaitFourOnThePassiveTrot) {
   for (LocomotionStand stand : {LocomotionStand::Mpc, LocomotionStand::Qp}) {
     const ModeSet modes(config_with(stand));
     for (int id : kWalkingGaitIds) EXPECT_EQ(modes.gaits().find(id), &modes.walking()) << id;
     const LocomotionGait* expected_stand =
         stand == LocomotionStand::Mpc ? static_cast<const LocomotionGait*>(&modes.walking()) : &modes.qp_stand_gait();
     for (int id : kStandGaitIds) EXPECT_EQ(modes.gaits().find(id), expected_stand) << id;
+    // the passive trot drives the walking controller itself, whichever stand is configured
+    for (int id : kPassiveTrotGaitIds) EXPECT_EQ(modes.gaits().find(id), &modes.passive_trot()) << id;
   }
 }
 
@@ -32,6 +35,7 @@ TEST(ModeSet, OtherGaitIdsHaveNoController) {
     bool listed = false;
     for (int walking : kWalkingGaitIds) listed |= walking == id;
     for (int stand : kStandGaitIds) listed |= stand == id;
+    for (int passive : kPassiveTrotGaitIds) listed |= passive == id;
     if (!listed) {
       EXPECT_EQ(modes.gaits().find(id), nullptr) << id;
     }

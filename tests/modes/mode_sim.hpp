@@ -38,8 +38,9 @@ inline ModeSetConfig mode_sim_config() {
 }
 
 struct ModeSim {
-  explicit ModeSim(ModeId startup = ModeId::RecoveryStand, double initial_height_m = 0.3)
-      : backend(sim_config(initial_height_m)),
+  explicit ModeSim(ModeId startup = ModeId::RecoveryStand, double initial_height_m = 0.3, bool sensor_noise = false,
+                   unsigned noise_seed = 0)
+      : backend(sim_config(initial_height_m, sensor_noise, noise_seed)),
         modes(mode_sim_config()),
         recovery_stand(modes.recovery_stand()),
         stand_gait(modes.qp_stand_gait()),

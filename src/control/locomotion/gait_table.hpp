@@ -33,6 +33,8 @@ inline constexpr double kDefaultStepHeightM = 0.06;
 inline constexpr int kStandGaitId = 1;
 inline constexpr int kStandWithoutPushRecoveryGaitId = 31;
 inline constexpr int kVariableTrotGaitId = 26;
+// the passive trot ("walk the dog"): stands until pulled, then trots along with the pull
+inline constexpr int kPassiveTrotGaitId = 4;
 
 struct GaitSpec {
   int id;
@@ -64,7 +66,7 @@ inline constexpr std::array<GaitSpec, 9> kGaitTable{{
      {-1.2, -0.4, -2.25},
      {1.2, 0.4, 2.25},
      kDefaultStepHeightM},
-    {4,
+    {kPassiveTrotGaitId,
      "walk-dog trot",
      GaitKind::Walking,
      {12, 6},

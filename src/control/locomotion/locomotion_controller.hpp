@@ -82,6 +82,10 @@ class LocomotionController {
   // clamped to the gait's limits
   bool set_command(const LocomotionTarget& command);
   void compute(const RobotState& state, JointCommand& command);
+  // the position reference jumps to the trunk: the controller keeps tracking velocity but no
+  // longer pulls the trunk back to where the commands alone would have taken it (a gait that lets
+  // outside forces move the robot)
+  void anchor_position_at_trunk(const RobotState& state) { position_des_ = state.position_world.head<2>(); }
 
   // false after several failed MPC solves in a row: the caller must switch to a safe behaviour
   bool healthy() const { return consecutive_failures_ < config_.failed_solves_to_give_up; }
