@@ -19,6 +19,8 @@ exec unshare "${unshare_args[@]}" -- bash -c '
   ip link set lo up
   ip link set lo multicast on
   ip route add 224.0.0.0/4 dev lo
+  # the robot address of the AlienGo sport controller, so clients can target it unchanged
+  ip addr add 192.168.123.220/32 dev lo
   mount -t tmpfs -o mode=1777 tmpfs /dev/shm
   export CEREBELLUM_IN_NETNS=1
   exec "$@"' netns_run "$@"

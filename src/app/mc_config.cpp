@@ -192,9 +192,9 @@ McConfig load_config(const std::string& path) {
   }
   McConfig config = default_config();
   if (root.IsNull()) return config;
-  const SectionReader top(
-      root, path, "<top>",
-      {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk", "highlevel", "sim_truth", "sim_command"});
+  const SectionReader top(root, path, "<top>",
+                          {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk", "highlevel", "aliengo",
+                           "sim_truth", "sim_command"});
   const fs::path base_dir = fs::absolute(path).parent_path();
 
   if (root["mc"]) {
@@ -244,6 +244,21 @@ McConfig load_config(const std::string& path) {
     read_highlevel(SectionReader(root["highlevel"], path, "highlevel",
                                  {"enabled", "command_url", "response_url", "odometry_url", "response_keepalive_s"}),
                    config.highlevel);
+  }
+  if (root["aliengo"]) {
+    const SectionReader s(root["aliengo"], path, "aliengo",
+                          {"enabled", "bind_address", "port", "silence_stand_s", "stand_hold_s"});
+    s.flag("enabled", config.aliengo.enabled);
+    s.text("bind_address", config.aliengo.bind_address);
+    double port = config.aliengo.port;
+    s.number("port", port, 0, 65535);
+    if (port != std::floor(port)) s.fail("aliengo.port", "must be a whole number in [0, 65535]");
+    config.aliengo.port = static_cast<int>(port);
+    s.number("silence_stand_s", config.aliengo.session.silence_stand_s, 0.05, 0.45);
+    s.number("stand_hold_s", config.aliengo.session.stand_hold_s, 0.5, 10.0);
+    if (config.aliengo.session.stand_hold_s <= config.aliengo.session.silence_stand_s) {
+      s.fail("aliengo.stand_hold_s", "must be longer than aliengo.silence_stand_s");
+    }
   }
   if (root["sim_truth"]) {
     SectionReader(root["sim_truth"], path, "sim_truth", {"rate_hz"})

@@ -12,6 +12,7 @@
 #include "io/lcm_sim_control/sim_control_config.hpp"
 #include "io/lcm_sim_truth/sim_truth_config.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
+#include "io/udp_aliengo/udp_aliengo_config.hpp"
 #include "modes/locomotion_stand.hpp"
 #include "safety/command_guard.hpp"
 
@@ -34,6 +35,7 @@ struct McConfig {
   ShmLowLevelConfig shm;
   MotorSdkConfig motor_sdk;
   HighLevelLcmConfig highlevel;
+  AlienGoUdpConfig aliengo;
   SimTruthConfig sim_truth;      // simulation only
   SimControlConfig sim_command;  // simulation only
 };

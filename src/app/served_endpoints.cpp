@@ -1,6 +1,7 @@
 #include "app/served_endpoints.hpp"
 
 #include <cstdio>
+#include <string>
 
 namespace cerebellum {
 
@@ -15,6 +16,10 @@ std::string served_endpoints(const McConfig& config) {
   if (config.motor_sdk.enabled) {
     add("motor SDK LCM: motor_ctrl and spi_data on " + config.motor_sdk.control_url + ", state_estimator on " +
         config.motor_sdk.estimator_url);
+  }
+  if (config.aliengo.enabled) {
+    add("AlienGo UDP: HighCmd / HighState on " + config.aliengo.bind_address + ":" +
+        std::to_string(config.aliengo.port));
   }
   if (config.shm.enabled) {
     char mode[8];

@@ -17,6 +17,7 @@
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
 #include "io/lcm_motor_sdk/lcm_state_feedback.hpp"
 #include "io/lcm_sim_control/sim_control_adapter.hpp"
+#include "io/udp_aliengo/udp_aliengo_adapter.hpp"
 #include "io/lcm_sim_truth/sim_truth_publisher.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_source.hpp"
 
@@ -62,6 +63,11 @@ int run_sim_command(const std::vector<std::string>& args) {
       highlevel.emplace(mc.machine(), config.highlevel, config.loop_period_s, stderr);
       loop.add_observer(*highlevel);
     }
+    std::optional<UdpAliengoAdapter> aliengo;
+    if (config.aliengo.enabled) {
+      aliengo.emplace(mc.machine(), config.aliengo, stderr);
+      loop.add_observer(*aliengo);
+    }
     // state_estimator and leg_control_data: listed by both interfaces, published once for both
     std::optional<LcmStateFeedback> state_feedback;
     if (config.motor_sdk.enabled || config.highlevel.enabled) {
@@ -90,6 +96,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     const bool tools_ok = tools.finish(stdout, stderr);
     if (motor_sdk) motor_sdk->finish(stdout);
     if (highlevel) highlevel->finish(stdout);
+    if (aliengo) aliengo->finish(stdout);
     if (state_feedback) state_feedback->finish();
     if (sim_truth) sim_truth->finish();
     if (sim_control) sim_control->finish(stderr);

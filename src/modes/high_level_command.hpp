@@ -87,10 +87,19 @@ struct HighLevelCommand {
   std::int32_t duration = 0;  // ms
 };
 
-// a command with the robot time it arrived at
+// the high-level clients: one holds the robot at a time (HighLevelMachine's lease)
+enum class HighLevelSource : std::uint8_t { CyberDog2Lcm = 0, AlienGoUdp = 1 };
+inline constexpr std::size_t kHighLevelSourceCount = 2;
+constexpr const char* source_name(HighLevelSource source) {
+  return source == HighLevelSource::CyberDog2Lcm ? "the CyberDog2 LCM client (robot_control_cmd)"
+                                                 : "the AlienGo UDP client (HighCmd)";
+}
+
+// a command with the robot time it arrived at and the client it came from
 struct TimedCommand {
   HighLevelCommand command;
   double received_s = 0.0;
+  HighLevelSource source = HighLevelSource::CyberDog2Lcm;
 };
 
 struct HighLevelStatus {

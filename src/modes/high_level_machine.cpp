@@ -11,8 +11,8 @@ HighLevelMachine::HighLevelMachine(double tick_period_s, const HighLevelCommand&
 
 void HighLevelMachine::add_mode(Mode& mode) { modes_[static_cast<std::size_t>(mode.id())] = &mode; }
 
-bool HighLevelMachine::submit(const HighLevelCommand& command, double received_s) {
-  if (inbox_.try_push({command, received_s})) return true;
+bool HighLevelMachine::submit(const HighLevelCommand& command, double received_s, HighLevelSource source) {
+  if (inbox_.try_push({command, received_s, source})) return true;
   counters_.ring_overflow.fetch_add(1, std::memory_order_relaxed);
   return false;
 }
@@ -35,6 +35,35 @@ void HighLevelMachine::refuse(const HighLevelCommand& command, const char* reaso
                         : current_ != nullptr ? static_cast<int>(current_->id())
                                               : -1;
   refusals_.try_push({command.mode, command.gait_id, from_mode, reason, holder});
+}
+
+bool HighLevelMachine::holds_lease(const TimedCommand& input) {
+  const bool holder_silent = !holder_ || input.received_s - holder_last_s_ > CommandQueue::kHeartbeatTimeoutS;
+  if (holder_ == input.source || holder_silent) {
+    if (holder_ && holder_ != input.source) {
+      // the last holder went silent (its timeout has damped the robot or will): a new client
+      counters_.lease_handovers.fetch_add(1, std::memory_order_relaxed);
+      queue_.clear();
+      applied_generation_ = queue_.generation();
+    }
+    holder_ = input.source;
+    holder_last_s_ = input.received_s;
+    return true;
+  }
+  const auto source = static_cast<std::size_t>(input.source);
+  counters_.refused_not_holder[source].fetch_add(1, std::memory_order_relaxed);
+  // one note per new command of the refused client (heartbeats and streams repeat it)
+  if (refused_life_count_[source] != input.command.life_count) {
+    refused_life_count_[source] = input.command.life_count;
+    refusals_.try_push(
+        {input.command.mode, input.command.gait_id, current_ != nullptr ? static_cast<int>(current_->id()) : -1,
+         input.source == HighLevelSource::CyberDog2Lcm ? "another high-level client holds the robot"
+                                                       : "another high-level client holds the robot (HighCmd)",
+         source_name(*holder_)});
+  }
+  // the LCM client sees its refusal in robot_control_response
+  if (input.source == HighLevelSource::CyberDog2Lcm) banned_ = true;
+  return false;
 }
 
 bool HighLevelMachine::take_input(const TimedCommand& input) {
@@ -156,8 +185,10 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
     if (startup == nullptr) startup = mode_for(static_cast<int>(ModeId::Off));
     switch_to(*startup, state, startup_);
   }
-  // client input of this tick
-  while (const auto input = inbox_.try_pop()) take_input(*input);
+  // client input of this tick, from the client holding the robot
+  while (const auto input = inbox_.try_pop()) {
+    if (holds_lease(*input)) take_input(*input);
+  }
   // a client that went silent: get-down protection
   if (queue_.timed_out(state.time_s)) {
     counters_.timeouts.fetch_add(1, std::memory_order_relaxed);

@@ -6,6 +6,7 @@
 #include <array>
 #include <atomic>
 #include <cstdint>
+#include <optional>
 
 #include "modes/source_arbiter.hpp"
 #include "core/spsc_ring.hpp"
@@ -25,6 +26,9 @@ struct CommandCounters {
   std::atomic<std::uint64_t> ring_overflow{0};
   std::atomic<std::uint64_t> banned_transitions{0};
   std::atomic<std::uint64_t> timeouts{0};
+  // commands and heartbeats of a client refused while another one holds the robot, per source
+  std::array<std::atomic<std::uint64_t>, kHighLevelSourceCount> refused_not_holder{};
+  std::atomic<std::uint64_t> lease_handovers{0};
 };
 
 // why the last command was refused, for a publisher thread to log (written in the loop thread)
@@ -45,7 +49,8 @@ class HighLevelMachine final : public OwnBehaviour {
   void add_mode(Mode& mode);
 
   // client thread: hand over one received command (lock-free); false when the ring is full
-  bool submit(const HighLevelCommand& command, double received_s);
+  bool submit(const HighLevelCommand& command, double received_s,
+              HighLevelSource source = HighLevelSource::CyberDog2Lcm);
 
   // loop thread
   void compute(const RobotState& state, JointCommand& command) override;
@@ -63,6 +68,9 @@ class HighLevelMachine final : public OwnBehaviour {
   const HighLevelCommand& running_command() const { return running_command_; }
   // what the body watch found this tick (loop thread)
   const SafetyReport& body_report() const { return body_report_; }
+  // the client holding the robot (loop thread); none before the first command and after the
+  // holder has been silent past the heartbeat timeout
+  std::optional<HighLevelSource> holder() const { return holder_; }
   // refusals not yet taken by a logger (loop thread pushes, one consumer thread pops)
   SpscRing<RefusalNote, 16>& refusals() { return refusals_; }
 
@@ -74,6 +82,8 @@ class HighLevelMachine final : public OwnBehaviour {
   void refuse(const HighLevelCommand& command, const char* reason, const char* holder = nullptr);
   // one tick of client input into the queue, counted; false when it holds no new command
   bool take_input(const TimedCommand& input);
+  // the lease: true when the input's client holds the robot or may take it over now
+  bool holds_lease(const TimedCommand& input);
   void update_status(const RobotState& state);
   // the standing modes: tipped over -> PureDamper with ori_error; picked up -> Lifted; and back
   void watch_body(const RobotState& state);
@@ -99,6 +109,9 @@ class HighLevelMachine final : public OwnBehaviour {
   bool orientation_error_ = false;    // latched until a recovery stand starts
   int foot_position_error_ = 0;       // footpos_error bits, latched likewise
   SpscRing<RefusalNote, 16> refusals_;
+  std::optional<HighLevelSource> holder_;
+  double holder_last_s_ = 0.0;
+  std::array<int, kHighLevelSourceCount> refused_life_count_{-1, -1};  // the last one noted per source
 };
 
 }  // namespace cerebellum

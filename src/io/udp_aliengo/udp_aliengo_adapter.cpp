@@ -1,0 +1,192 @@
+#include "io/udp_aliengo/udp_aliengo_adapter.hpp"
+
+#include <arpa/inet.h>
+#include <fcntl.h>
+#include <poll.h>
+#include <sys/socket.h>
+#include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+
+#include "io/common/count_report.hpp"
+#include "io/common/wall_clock.hpp"
+
+namespace cerebellum {
+namespace {
+
+constexpr const char* kInterfaceName = "aliengo";
+constexpr int kRefusalLinesPerSecond = 5;
+constexpr int kPollTimeoutMs = 1;
+
+int open_socket(const AlienGoUdpConfig& config, int& bound_port) {
+  sockaddr_in address{};
+  address.sin_family = AF_INET;
+  address.sin_port = htons(static_cast<std::uint16_t>(config.port));
+  if (inet_pton(AF_INET, config.bind_address.c_str(), &address.sin_addr) != 1) {
+    throw std::runtime_error("aliengo: bind_address '" + config.bind_address + "' is not an IPv4 address");
+  }
+  const int fd = ::socket(AF_INET, SOCK_DGRAM, 0);
+  if (fd < 0) throw std::runtime_error(std::string("aliengo: socket: ") + std::strerror(errno));
+  if (::bind(fd, reinterpret_cast<const sockaddr*>(&address), sizeof address) != 0) {
+    const std::string reason = std::strerror(errno);
+    ::close(fd);
+    throw std::runtime_error("aliengo: cannot bind UDP " + config.bind_address + ":" + std::to_string(config.port) +
+                             ": " + reason + (errno == EADDRNOTAVAIL ? " (the address is not on this machine)" : "") +
+                             " (config aliengo.bind_address / aliengo.port)");
+  }
+  ::fcntl(fd, F_SETFL, ::fcntl(fd, F_GETFL) | O_NONBLOCK);
+  socklen_t length = sizeof address;
+  ::getsockname(fd, reinterpret_cast<sockaddr*>(&address), &length);
+  bound_port = ntohs(address.sin_port);
+  return fd;
+}
+
+}  // namespace
+
+UdpAliengoAdapter::UdpAliengoAdapter(HighLevelMachine& machine, const AlienGoUdpConfig& config, std::FILE* log)
+    : machine_(machine),
+      log_(log),
+      port_(config.port),
+      socket_(open_socket(config, port_)),
+      session_(config.session),
+      refusal_log_(log, kInterfaceName, "HighCmd refusals", kRefusalLinesPerSecond) {
+  std::fprintf(log_, "aliengo: HighCmd in, HighState back on UDP %s:%d\n", config.bind_address.c_str(), port_);
+  std::fflush(log_);
+  thread_.start([this] { step(); });
+}
+
+UdpAliengoAdapter::~UdpAliengoAdapter() {
+  thread_.stop();
+  if (socket_ >= 0) ::close(socket_);
+}
+
+void UdpAliengoAdapter::on_cycle(const CycleRecord& record) {
+  const HighLevelStatus& status = machine_.status();
+  snapshots_.try_push(Snapshot{record.state, status.mode, status.order_process_bar});
+}
+
+void UdpAliengoAdapter::take_newest_snapshot() {
+  while (std::optional<Snapshot> snapshot = snapshots_.try_pop()) {
+    newest_ = *snapshot;
+    has_snapshot_ = true;
+  }
+}
+
+void UdpAliengoAdapter::step() {
+  pollfd waiting{socket_, POLLIN, 0};
+  ::poll(&waiting, 1, kPollTimeoutMs);
+  take_newest_snapshot();
+  bool any = false;
+  for (;;) {
+    sockaddr_in sender{};
+    socklen_t sender_length = sizeof sender;
+    const ssize_t got = ::recvfrom(socket_, buffer_.data(), buffer_.size(), MSG_TRUNC,
+                                   reinterpret_cast<sockaddr*>(&sender), &sender_length);
+    if (got < 0) break;  // EAGAIN: nothing more
+    any = true;
+    handle_datagram(buffer_.data(), static_cast<std::size_t>(got), sender);
+  }
+  if (!any && has_snapshot_) {
+    const AlienGoStep step =
+        session_.on_silence(newest_.state, newest_.mc_mode, newest_.mc_progress, newest_.state.time_s);
+    if (step.submit) machine_.submit(*step.submit, newest_.state.time_s, HighLevelSource::AlienGoUdp);
+  }
+  log_once_per_second();
+}
+
+void UdpAliengoAdapter::handle_datagram(const std::uint8_t* data, std::size_t size, const sockaddr_in& sender) {
+  received_.fetch_add(1, std::memory_order_relaxed);
+  AlienGoCommand command;
+  // MSG_TRUNC: size is the datagram's real length even when it did not fit the buffer
+  const AlienGoDecode decoded =
+      size > buffer_.size() ? AlienGoDecode::WrongLength : decode_high_cmd(data, size, command);
+  switch (decoded) {
+    case AlienGoDecode::Ok: break;
+    case AlienGoDecode::WrongLength: wrong_length_.fetch_add(1, std::memory_order_relaxed); return;
+    case AlienGoDecode::BadCrc: bad_crc_.fetch_add(1, std::memory_order_relaxed); return;
+    case AlienGoDecode::LowLevel: low_level_.fetch_add(1, std::memory_order_relaxed); return;
+    case AlienGoDecode::NonFinite: non_finite_.fetch_add(1, std::memory_order_relaxed); return;
+  }
+  accepted_.fetch_add(1, std::memory_order_relaxed);
+  if (has_snapshot_) {
+    const double now_s = newest_.state.time_s;
+    const AlienGoStep step = session_.on_command(command, newest_.state, newest_.mc_mode, newest_.mc_progress, now_s);
+    if (step.submit) machine_.submit(*step.submit, now_s, HighLevelSource::AlienGoUdp);
+    if (step.refusal != nullptr) {
+      illegal_moves_.fetch_add(1, std::memory_order_relaxed);
+      char line[160];
+      std::snprintf(line, sizeof line, "HighCmd mode %d refused in mode %d: %s", command.mode, session_.mode(),
+                    step.refusal);
+      refusal_log_.line(wall_seconds(), line);
+    }
+  }
+  answer(sender);
+}
+
+void UdpAliengoAdapter::answer(const sockaddr_in& sender) {
+  std::uint8_t frame[kHighStateBytes];
+  encode_high_state(make_feedback(newest_.state, session_.mode()), frame);
+  const ssize_t sent =
+      ::sendto(socket_, frame, sizeof frame, 0, reinterpret_cast<const sockaddr*>(&sender), sizeof sender);
+  (sent == static_cast<ssize_t>(sizeof frame) ? states_sent_ : send_errors_).fetch_add(1, std::memory_order_relaxed);
+}
+
+void UdpAliengoAdapter::log_once_per_second() {
+  const double now_s = wall_seconds();
+  refusal_log_.tick(now_s);
+  if (now_s < next_count_log_s_) return;
+  next_count_log_s_ = now_s + 1.0;
+  const AlienGoCounters c = counters();
+  const std::uint64_t drops = c.wrong_length + c.bad_crc + c.low_level + c.non_finite;
+  if (drops != logged_drops_) {
+    std::fprintf(log_,
+                 "aliengo: HighCmd datagrams dropped so far: %llu wrong length, %llu bad CRC, %llu not high level, "
+                 "%llu with NaN/Inf\n",
+                 static_cast<unsigned long long>(c.wrong_length), static_cast<unsigned long long>(c.bad_crc),
+                 static_cast<unsigned long long>(c.low_level), static_cast<unsigned long long>(c.non_finite));
+    logged_drops_ = drops;
+  }
+  if (c.refused_not_holder != logged_not_holder_) {
+    std::fprintf(log_,
+                 "aliengo: %llu HighCmd refused in the last second: the CyberDog2 LCM client holds the robot "
+                 "(until it is silent for 0.5 s)\n",
+                 static_cast<unsigned long long>(c.refused_not_holder - logged_not_holder_));
+    logged_not_holder_ = c.refused_not_holder;
+  }
+  std::fflush(log_);
+}
+
+AlienGoCounters UdpAliengoAdapter::counters() const {
+  AlienGoCounters c;
+  c.received = received_.load();
+  c.accepted = accepted_.load();
+  c.wrong_length = wrong_length_.load();
+  c.bad_crc = bad_crc_.load();
+  c.low_level = low_level_.load();
+  c.non_finite = non_finite_.load();
+  c.illegal_moves = illegal_moves_.load();
+  c.states_sent = states_sent_.load();
+  c.send_errors = send_errors_.load();
+  c.refused_not_holder =
+      machine_.counters().refused_not_holder[static_cast<std::size_t>(HighLevelSource::AlienGoUdp)].load();
+  return c;
+}
+
+void UdpAliengoAdapter::finish(std::FILE* out) {
+  thread_.stop();
+  const AlienGoCounters c = counters();
+  using ull = unsigned long long;
+  std::fprintf(out,
+               "aliengo: HighCmd %llu received, %llu accepted, %llu wrong length, %llu bad CRC, %llu not high "
+               "level, %llu NaN/Inf, %llu illegal moves, %llu refused (another client held the robot); "
+               "HighState %llu sent, %llu send errors\n",
+               ull(c.received), ull(c.accepted), ull(c.wrong_length), ull(c.bad_crc), ull(c.low_level),
+               ull(c.non_finite), ull(c.illegal_moves), ull(c.refused_not_holder), ull(c.states_sent),
+               ull(c.send_errors));
+  std::fflush(out);
+}
+
+}  // namespace cerebellum

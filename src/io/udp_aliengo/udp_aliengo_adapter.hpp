@@ -1,0 +1,92 @@
+// The AlienGo high-level interface on UDP. One thread receives HighCmd datagrams (checked and
+// translated here, dropped ones counted per reason), runs the client's sport session against the
+// newest cycle the loop copied, hands the resulting commands to the HighLevelMachine as the
+// AlienGo source, and answers each datagram's sender with a HighState. The loop thread only
+// copies its state into a ring (on_cycle).
+#pragma once
+
+#include <netinet/in.h>
+
+#include <array>
+#include <atomic>
+#include <cstdint>
+#include <cstdio>
+#include <string>
+
+#include "core/spsc_ring.hpp"
+#include "cycle/cycle_observer.hpp"
+#include "io/common/adapter_thread.hpp"
+#include "io/common/rate_limited_log.hpp"
+#include "io/udp_aliengo/aliengo_session.hpp"
+#include "io/udp_aliengo/aliengo_wire.hpp"
+#include "io/udp_aliengo/udp_aliengo_config.hpp"
+#include "modes/high_level_machine.hpp"
+
+namespace cerebellum {
+
+struct AlienGoCounters {
+  std::uint64_t received = 0;  // datagrams
+  std::uint64_t accepted = 0;  // good HighCmd frames
+  std::uint64_t wrong_length = 0;
+  std::uint64_t bad_crc = 0;
+  std::uint64_t low_level = 0;
+  std::uint64_t non_finite = 0;
+  std::uint64_t illegal_moves = 0;  // refused by the vendor's mode table (the robot stays)
+  std::uint64_t states_sent = 0;
+  std::uint64_t send_errors = 0;
+  std::uint64_t refused_not_holder = 0;  // the CyberDog2 LCM client held the robot
+};
+
+class UdpAliengoAdapter final : public CycleObserver {
+ public:
+  // binds the socket and starts the thread; throws std::runtime_error naming the address
+  UdpAliengoAdapter(HighLevelMachine& machine, const AlienGoUdpConfig& config, std::FILE* log);
+  ~UdpAliengoAdapter() override;
+  UdpAliengoAdapter(const UdpAliengoAdapter&) = delete;
+  UdpAliengoAdapter& operator=(const UdpAliengoAdapter&) = delete;
+
+  // loop thread, after the tick: copy the state and the MC's mode for the interface thread
+  void on_cycle(const CycleRecord& record) override;
+
+  // stops the thread and prints one summary line to out
+  void finish(std::FILE* out);
+  AlienGoCounters counters() const;
+  // the port actually bound (config port 0: any free port, for tests)
+  int port() const { return port_; }
+
+ private:
+  struct Snapshot {
+    RobotState state;
+    int mc_mode = 0;
+    int mc_progress = 0;
+  };
+
+  void step();
+  void handle_datagram(const std::uint8_t* data, std::size_t size, const sockaddr_in& sender);
+  void answer(const sockaddr_in& sender);
+  void take_newest_snapshot();
+  void log_once_per_second();
+
+  HighLevelMachine& machine_;
+  std::FILE* log_;
+  int port_ = 0;  // before socket_: opening the socket sets it
+  int socket_ = -1;
+  AlienGoSession session_;
+  // loop thread -> interface thread
+  SpscRing<Snapshot, 8> snapshots_;
+  // interface thread
+  Snapshot newest_;
+  bool has_snapshot_ = false;
+  std::array<std::uint8_t, 2048> buffer_{};
+  RateLimitedLog refusal_log_;
+  double next_count_log_s_ = 0.0;
+  std::uint64_t logged_drops_ = 0;
+  std::uint64_t logged_not_holder_ = 0;
+  // interface thread -> anyone
+  std::atomic<std::uint64_t> received_{0}, accepted_{0}, wrong_length_{0}, bad_crc_{0}, low_level_{0}, non_finite_{0},
+      illegal_moves_{0}, states_sent_{0}, send_errors_{0};
+  // last member: started once everything above is built, stopped first
+  AdapterThread thread_;
+};
+
+}  // namespace cerebellum

@@ -1,0 +1,73 @@
+// The MC in lockstep with an AlienGo client's sport session streaming a HighCmd every tick (the
+// path a UDP client's commands take, without the socket), judged on the simulator's truth.
+#pragma once
+
+#include <Eigen/Geometry>
+#include <cmath>
+
+#include "app/simulated_robot.hpp"
+#include "io/udp_aliengo/aliengo_session.hpp"
+
+namespace cerebellum::testing {
+
+struct AlienGoSim {
+  explicit AlienGoSim(const McConfig& config = default_config()) : mc(make_simulated_mc(config)) {}
+
+  double time_s() { return mc.backend().time_s(); }
+  const RobotState& state() { return mc.loop().last_cycle().state; }
+  const HighLevelStatus& status() { return mc.machine().status(); }
+
+  // one tick with this HighCmd received just before it
+  void tick(const AlienGoCommand& command) {
+    const RobotState& s = state();
+    last = session.on_command(command, s, status().mode, status().order_process_bar, s.time_s);
+    if (last.submit) mc.machine().submit(*last.submit, s.time_s, HighLevelSource::AlienGoUdp);
+    mc.loop().tick();
+  }
+  // one tick without a HighCmd (the client is silent)
+  void silent_tick() {
+    const RobotState& s = state();
+    last = session.on_silence(s, status().mode, status().order_process_bar, s.time_s);
+    if (last.submit) mc.machine().submit(*last.submit, s.time_s, HighLevelSource::AlienGoUdp);
+    mc.loop().tick();
+  }
+  void stream(const AlienGoCommand& command, double seconds) {
+    const double end = time_s() + seconds - 1e-9;
+    while (time_s() < end) tick(command);
+  }
+  void silence(double seconds) {
+    const double end = time_s() + seconds - 1e-9;
+    while (time_s() < end) silent_tick();
+  }
+  // the MC's own start (it stands up by itself), no client yet
+  void idle(double seconds) {
+    const double end = time_s() + seconds - 1e-9;
+    while (time_s() < end) mc.loop().tick();
+  }
+
+  // simulator truth
+  GroundTruth truth() { return mc.simulation().ground_truth(); }
+  Eigen::Vector3d true_rpy() {
+    const GroundTruth t = truth();
+    const Eigen::Matrix3d r = Eigen::Quaterniond(t.quat[0], t.quat[1], t.quat[2], t.quat[3]).toRotationMatrix();
+    return {std::atan2(r(2, 1), r(2, 2)), std::asin(-std::clamp(r(2, 0), -1.0, 1.0)), std::atan2(r(1, 0), r(0, 0))};
+  }
+  Eigen::Vector2d true_xy() { return {truth().position[0], truth().position[1]}; }
+  double true_height() { return truth().position[2]; }
+  bool all_feet_down() {
+    const GroundTruth t = truth();
+    return t.foot_contact[0] && t.foot_contact[1] && t.foot_contact[2] && t.foot_contact[3];
+  }
+
+  Mc mc;
+  AlienGoSession session;
+  AlienGoStep last;
+};
+
+inline AlienGoCommand high_cmd(int mode) {
+  AlienGoCommand c;
+  c.mode = mode;
+  return c;
+}
+
+}  // namespace cerebellum::testing
