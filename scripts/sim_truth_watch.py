@@ -6,7 +6,7 @@ for judging a client program on what the simulated robot really did, not on the 
 
 Runs until SIGINT / SIGTERM, or until no message arrived for --idle seconds after the first one
 (the simulation stopped), then prints one summary line and the final state as KEY=VALUE lines
-(final_height_m, final_tilt_deg, final_feet_down, lowest_height_m, largest_tilt_deg, messages).
+(final_x_m, final_y_m, final_height_m, final_tilt_deg, final_feet_down, lowest_height_m, largest_tilt_deg, messages).
 """
 import argparse
 import math
@@ -59,6 +59,8 @@ def main():
     feet = "".join("1" if c else "0" for c in final.foot_contact)
     summary = {
         "messages": len(messages),
+        "final_x_m": f"{final.position[0]:.3f}",
+        "final_y_m": f"{final.position[1]:.3f}",
         "final_height_m": f"{final.position[2]:.3f}",
         "final_tilt_deg": f"{tilt_deg(final.quaternion):.1f}",
         "final_feet_down": feet,

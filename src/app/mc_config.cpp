@@ -247,7 +247,7 @@ McConfig load_config(const std::string& path) {
   }
   if (root["aliengo"]) {
     const SectionReader s(root["aliengo"], path, "aliengo",
-                          {"enabled", "bind_address", "port", "silence_stand_s", "stand_hold_s"});
+                          {"enabled", "bind_address", "port", "silence_stand_s", "stand_hold_s", "lie_down_s"});
     s.flag("enabled", config.aliengo.enabled);
     s.text("bind_address", config.aliengo.bind_address);
     double port = config.aliengo.port;
@@ -256,6 +256,7 @@ McConfig load_config(const std::string& path) {
     config.aliengo.port = static_cast<int>(port);
     s.number("silence_stand_s", config.aliengo.session.silence_stand_s, 0.05, 0.45);
     s.number("stand_hold_s", config.aliengo.session.stand_hold_s, 0.5, 10.0);
+    s.number("lie_down_s", config.aliengo.session.lie_down_s, 1.5, 10.0);
     if (config.aliengo.session.stand_hold_s <= config.aliengo.session.silence_stand_s) {
       s.fail("aliengo.stand_hold_s", "must be longer than aliengo.silence_stand_s");
     }

@@ -106,6 +106,11 @@ void CommandQueue::clear() {
   ++generation_;
 }
 
+void CommandQueue::start_new_client() {
+  clear();
+  last_life_count_ = -1;
+}
+
 const HighLevelCommand* CommandQueue::current() const { return entries_.empty() ? nullptr : &entries_.front().command; }
 
 void CommandQueue::start_front() { ++generation_; }

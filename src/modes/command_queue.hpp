@@ -30,8 +30,11 @@ class CommandQueue {
   void tick(bool switching);
   // a client has spoken and then been silent for 0.5 s
   bool timed_out(double time_s) const;
-  // forget every entry and the client (after a timeout or a mode forced by the MC)
+  // forget every entry and the client (after a timeout or a mode forced by the MC); the last
+  // life_count is kept: the same client's heartbeats must not run its old command again
   void clear();
+  // another client takes over: clear(), and its first command counts whatever its life_count
+  void start_new_client();
   // the machine refused current(): take it out as if it had never been sent. When it came in
   // with the last receive(), the queue is as it was before that receive (entries it replaced
   // come back, the generation does not change: nothing new to apply). Otherwise the next entry,

@@ -43,7 +43,7 @@ bool HighLevelMachine::holds_lease(const TimedCommand& input) {
     if (holder_ && holder_ != input.source) {
       // the last holder went silent (its timeout has damped the robot or will): a new client
       counters_.lease_handovers.fetch_add(1, std::memory_order_relaxed);
-      queue_.clear();
+      queue_.start_new_client();
       applied_generation_ = queue_.generation();
     }
     holder_ = input.source;

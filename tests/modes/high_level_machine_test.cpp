@@ -326,3 +326,51 @@ TEST(HighLevelMachine, WhileALowLevelClientHoldsTheRobotTheResponseIsLiveAndNewC
 
 }  // namespace
 }  // namespace cerebellum
+
+namespace cerebellum {
+namespace {
+
+// the lease: one high-level client at a time
+TEST(HighLevelLease, TheFirstClientHoldsTheRobotAndTheOtherIsRefusedWithItsReason) {
+  Machine m(ModeId::RecoveryStand);
+  m.tick();
+  m.machine.submit(cmd(ModeId::Locomotion, 3, 1), m.state.time_s, HighLevelSource::AlienGoUdp);
+  m.tick();
+  ASSERT_EQ(m.machine.status().mode, 11);
+  ASSERT_EQ(m.machine.holder(), HighLevelSource::AlienGoUdp);
+  while (m.machine.refusals().try_pop()) {
+  }
+  // the LCM client speaks while the UDP client streams: refused, seen as BAN_TRANS, named holder
+  for (int i = 0; i < 10; ++i) {
+    m.machine.submit(cmd(ModeId::PureDamper, 0, 7), m.state.time_s, HighLevelSource::CyberDog2Lcm);
+    m.machine.submit(cmd(ModeId::Locomotion, 3, 1), m.state.time_s, HighLevelSource::AlienGoUdp);
+    m.tick();
+  }
+  EXPECT_EQ(m.machine.status().mode, 11);
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::BanTransition);
+  EXPECT_EQ(m.machine.counters().refused_not_holder[0].load(), 10u);
+  const auto note = m.machine.refusals().try_pop();
+  ASSERT_TRUE(note.has_value());
+  EXPECT_STREQ(note->holder, source_name(HighLevelSource::AlienGoUdp));
+  EXPECT_FALSE(m.machine.refusals().try_pop().has_value()) << "one note per new command, not per packet";
+}
+
+TEST(HighLevelLease, PassesToTheOtherClientOnceTheHolderIsSilentPastTheTimeout) {
+  Machine m(ModeId::RecoveryStand);
+  m.tick();
+  m.machine.submit(cmd(ModeId::Locomotion, 3, 1), m.state.time_s, HighLevelSource::CyberDog2Lcm);
+  m.tick();
+  ASSERT_EQ(m.machine.holder(), HighLevelSource::CyberDog2Lcm);
+  // silent for longer than the heartbeat timeout: the MC damps; the UDP client may take over
+  for (int i = 0; i < 300; ++i) m.tick();
+  EXPECT_EQ(m.machine.status().mode, 7);
+  m.machine.submit(cmd(ModeId::RecoveryStand, 0, 1), m.state.time_s, HighLevelSource::AlienGoUdp);
+  m.tick();
+  EXPECT_EQ(m.machine.holder(), HighLevelSource::AlienGoUdp);
+  EXPECT_EQ(m.machine.status().mode, 12);
+  EXPECT_EQ(m.machine.counters().lease_handovers.load(), 1u);
+  EXPECT_EQ(m.machine.counters().refused_not_holder[1].load(), 0u);
+}
+
+}  // namespace
+}  // namespace cerebellum

@@ -184,7 +184,7 @@ AlienGoStep AlienGoSession::on_silence(const RobotState&, int, int, double now_s
   if (!active_) return {};
   const double silent_s = now_s - last_command_s_;
   if (silent_s < config_.silence_stand_s) return {};
-  if (silent_s > config_.stand_hold_s) {
+  if (silent_s > config_.stand_hold_s + config_.lie_down_s) {
     // no more heartbeats: the MC's heartbeat timeout damps the robot; the next HighCmd starts a
     // new session (a new sport frame)
     active_ = false;
@@ -194,11 +194,12 @@ AlienGoStep AlienGoSession::on_silence(const RobotState&, int, int, double now_s
     silenced_ = true;
     stairs_walking_ = false;
   }
-  // down or being damped already: keep it so, otherwise stand
+  // down or being damped already: keep it so
   const auto submitted = static_cast<ModeId>(last_submitted_.mode);
-  if (submitted == ModeId::PureDamper || submitted == ModeId::RecoveryStand || submitted == ModeId::QpStand) {
-    return emit(last_submitted_);
-  }
+  if (submitted == ModeId::PureDamper) return emit(last_submitted_);
+  // held long enough: lie down in position control, then the timeout damps a lying robot
+  if (silent_s > config_.stand_hold_s) return emit(mc_command(ModeId::PureDamper, 1));
+  if (submitted == ModeId::RecoveryStand || submitted == ModeId::QpStand) return emit(last_submitted_);
   return emit(stand_command());
 }
 

@@ -17,9 +17,11 @@ namespace cerebellum {
 struct AlienGoSessionConfig {
   // silent this long while walking: stand (a stream stopped, not a command)
   double silence_stand_s = 0.25;
-  // the stand is held this long after the last command; then no more heartbeats, and the MC's
-  // heartbeat timeout (0.5 s) damps the robot and ends the session
+  // the stand is held until this long after the last command; then the robot lies down actively
+  // (position control) for lie_down_s; then no more heartbeats: the MC's heartbeat timeout
+  // (0.5 s) damps the lying robot and ends the session. (Damping a standing robot lets it fall.)
   double stand_hold_s = 2.0;
+  double lie_down_s = 2.5;
   double trot_step_height_m = 0.04;    // swing height of gaitType 0 / 1 before dFootRaiseHeight
   double stairs_step_height_m = 0.06;  // gaitType 2: higher feet
   // gaitType 2: slower (the vendor's advice for stairs)

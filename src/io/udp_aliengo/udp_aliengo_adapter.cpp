@@ -65,14 +65,23 @@ UdpAliengoAdapter::~UdpAliengoAdapter() {
 
 void UdpAliengoAdapter::on_cycle(const CycleRecord& record) {
   const HighLevelStatus& status = machine_.status();
-  snapshots_.try_push(Snapshot{record.state, status.mode, status.order_process_bar});
+  snapshots_.try_push(Snapshot{record.state, status.mode, status.gait_id, status.order_process_bar});
 }
 
 void UdpAliengoAdapter::take_newest_snapshot() {
   while (std::optional<Snapshot> snapshot = snapshots_.try_pop()) {
     newest_ = *snapshot;
     has_snapshot_ = true;
+    if (newest_.mc_mode == pending_mc_mode_ && newest_.mc_gait == pending_mc_gait_) reported_mode_ = pending_mode_;
   }
+}
+
+void UdpAliengoAdapter::submit(const AlienGoStep& step, double now_s) {
+  if (!step.submit) return;
+  machine_.submit(*step.submit, now_s, HighLevelSource::AlienGoUdp);
+  pending_mode_ = session_.mode();
+  pending_mc_mode_ = step.submit->mode;
+  pending_mc_gait_ = step.submit->gait_id;
 }
 
 void UdpAliengoAdapter::step() {
@@ -90,9 +99,8 @@ void UdpAliengoAdapter::step() {
     handle_datagram(buffer_.data(), static_cast<std::size_t>(got), sender);
   }
   if (!any && has_snapshot_) {
-    const AlienGoStep step =
-        session_.on_silence(newest_.state, newest_.mc_mode, newest_.mc_progress, newest_.state.time_s);
-    if (step.submit) machine_.submit(*step.submit, newest_.state.time_s, HighLevelSource::AlienGoUdp);
+    submit(session_.on_silence(newest_.state, newest_.mc_mode, newest_.mc_progress, newest_.state.time_s),
+           newest_.state.time_s);
   }
   log_once_per_second();
 }
@@ -114,7 +122,7 @@ void UdpAliengoAdapter::handle_datagram(const std::uint8_t* data, std::size_t si
   if (has_snapshot_) {
     const double now_s = newest_.state.time_s;
     const AlienGoStep step = session_.on_command(command, newest_.state, newest_.mc_mode, newest_.mc_progress, now_s);
-    if (step.submit) machine_.submit(*step.submit, now_s, HighLevelSource::AlienGoUdp);
+    submit(step, now_s);
     if (step.refusal != nullptr) {
       illegal_moves_.fetch_add(1, std::memory_order_relaxed);
       char line[160];
@@ -128,7 +136,7 @@ void UdpAliengoAdapter::handle_datagram(const std::uint8_t* data, std::size_t si
 
 void UdpAliengoAdapter::answer(const sockaddr_in& sender) {
   std::uint8_t frame[kHighStateBytes];
-  encode_high_state(make_feedback(newest_.state, session_.mode()), frame);
+  encode_high_state(make_feedback(newest_.state, reported_mode_), frame);
   const ssize_t sent =
       ::sendto(socket_, frame, sizeof frame, 0, reinterpret_cast<const sockaddr*>(&sender), sizeof sender);
   (sent == static_cast<ssize_t>(sizeof frame) ? states_sent_ : send_errors_).fetch_add(1, std::memory_order_relaxed);

@@ -58,6 +58,7 @@ class UdpAliengoAdapter final : public CycleObserver {
   struct Snapshot {
     RobotState state;
     int mc_mode = 0;
+    int mc_gait = 0;
     int mc_progress = 0;
   };
 
@@ -65,6 +66,7 @@ class UdpAliengoAdapter final : public CycleObserver {
   void handle_datagram(const std::uint8_t* data, std::size_t size, const sockaddr_in& sender);
   void answer(const sockaddr_in& sender);
   void take_newest_snapshot();
+  void submit(const AlienGoStep& step, double now_s);
   void log_once_per_second();
 
   HighLevelMachine& machine_;
@@ -77,6 +79,12 @@ class UdpAliengoAdapter final : public CycleObserver {
   // interface thread
   Snapshot newest_;
   bool has_snapshot_ = false;
+  // HighState.mode: the session's mode once the MC runs what it was translated into (so a client
+  // sees when its command has been taken, or that it never is while another client holds the robot)
+  int reported_mode_ = 0;
+  int pending_mode_ = 0;
+  int pending_mc_mode_ = -1;
+  int pending_mc_gait_ = -1;
   std::array<std::uint8_t, 2048> buffer_{};
   RateLimitedLog refusal_log_;
   double next_count_log_s_ = 0.0;
