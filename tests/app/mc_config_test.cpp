@@ -3,13 +3,21 @@
 
 #include <gtest/gtest.h>
 
+#include <sys/stat.h>
+#include <unistd.h>
+
 #include <fstream>
+#include <string>
 
 namespace cerebellum {
 namespace {
 
+// in a folder of this process: ctest runs the cases of this file in parallel processes
 std::string write_file(const std::string& name, const std::string& text) {
-  const std::string path = ::testing::TempDir() + "/" + name;
+  // TempDir() ends with a '/'
+  const std::string dir = ::testing::TempDir() + "mc_config_test_" + std::to_string(::getpid());
+  ::mkdir(dir.c_str(), 0700);
+  const std::string path = dir + "/" + name;
   std::ofstream(path) << text;
   return path;
 }
@@ -39,7 +47,7 @@ TEST(McConfig, FileOverridesDefaultsAndResolvesRelativeModelPaths) {
                                       "stand_up: {kp: 80, kd: 1.5}\n");
   const McConfig config = load_config(path);
   EXPECT_EQ(config.startup, Startup::Damper);
-  EXPECT_EQ(config.robot.model_path, ::testing::TempDir() + "models/other.xml");
+  EXPECT_EQ(config.robot.model_path, path.substr(0, path.rfind('/') + 1) + "models/other.xml");
   EXPECT_EQ(config.robot.noise.seed, 9u);
   EXPECT_TRUE(config.robot.noise.enabled);
   EXPECT_DOUBLE_EQ(config.stand_up.kp, 80.0);
