@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 
 #include "core/leg_kinematics.hpp"
@@ -14,19 +15,33 @@ namespace {
 
 static_assert(sizeof(sdk::HighCmd) == kHighCmdBytes && sizeof(sdk::HighState) == kHighStateBytes);
 
-bool finite(const float* values, std::size_t n) {
-  return std::all_of(values, values + n, [](float v) { return std::isfinite(v); });
+// fields are read and written by their offsets in the packed structs (comm.h), never through a
+// pointer or reference into them: a float inside a packed struct is not 4-byte aligned
+float get_f32(const std::uint8_t* frame, std::size_t offset) {
+  float v;
+  std::memcpy(&v, frame + offset, sizeof v);
+  return v;
+}
+void put_f32(std::uint8_t* frame, std::size_t offset, double value) {
+  const auto v = static_cast<float>(value);
+  std::memcpy(frame + offset, &v, sizeof v);
+}
+void put_vec(std::uint8_t* frame, std::size_t offset, const Eigen::Vector3d& v) {
+  for (int i = 0; i < 3; ++i) put_f32(frame, offset + 4 * static_cast<std::size_t>(i), v[i]);
+}
+Eigen::Vector3d get_vec(const std::uint8_t* frame, std::size_t offset) {
+  return {get_f32(frame, offset), get_f32(frame, offset + 4), get_f32(frame, offset + 8)};
 }
 
-void put3(float (&out)[3], const Eigen::Vector3d& v) {
-  for (int i = 0; i < 3; ++i) out[i] = static_cast<float>(v[i]);
-}
-void put(sdk::Cartesian& out, const Eigen::Vector3d& v) {
-  out.x = static_cast<float>(v.x());
-  out.y = static_cast<float>(v.y());
-  out.z = static_cast<float>(v.z());
-}
-Eigen::Vector3d get(const sdk::Cartesian& c) { return {c.x, c.y, c.z}; }
+constexpr std::size_t kCmdFloatsBegin = offsetof(sdk::HighCmd, dFootRaiseHeight);
+constexpr std::size_t kCmdFloatsEnd = offsetof(sdk::HighCmd, led);  // dFootRaiseHeight .. yawSpeed
+constexpr std::size_t kImu = offsetof(sdk::HighState, imu);
+constexpr std::size_t kImuQuaternion = kImu + offsetof(sdk::IMU, quaternion);
+constexpr std::size_t kImuGyroscope = kImu + offsetof(sdk::IMU, gyroscope);
+constexpr std::size_t kImuAccelerometer = kImu + offsetof(sdk::IMU, accelerometer);
+constexpr std::size_t kImuRpy = kImu + offsetof(sdk::IMU, rpy);
+constexpr std::size_t kImuTemperature = kImu + offsetof(sdk::IMU, temperature);
+constexpr std::size_t kCartesianBytes = sizeof(sdk::Cartesian);
 
 }  // namespace
 
@@ -44,39 +59,36 @@ const char* to_string(AlienGoDecode result) {
 AlienGoDecode decode_high_cmd(const std::uint8_t* data, std::size_t size, AlienGoCommand& out) {
   if (data == nullptr || size != kHighCmdBytes) return AlienGoDecode::WrongLength;
   if (sdk::stored_crc(data, size) != sdk::frame_crc(data, size)) return AlienGoDecode::BadCrc;
-  sdk::HighCmd cmd;
-  std::memcpy(&cmd, data, sizeof cmd);
-  if (cmd.levelFlag != sdk::HIGHLEVEL && cmd.levelFlag != sdk::TRIGERLEVEL) return AlienGoDecode::LowLevel;
-  if (!finite(&cmd.dFootRaiseHeight, 1) || !finite(&cmd.dBodyHeight, 1) || !finite(cmd.position, 2) ||
-      !finite(cmd.rpy, 3) || !finite(cmd.velocity, 2) || !finite(&cmd.yawSpeed, 1)) {
-    return AlienGoDecode::NonFinite;
+  const std::uint8_t level = data[offsetof(sdk::HighCmd, levelFlag)];
+  if (level != sdk::HIGHLEVEL && level != sdk::TRIGERLEVEL) return AlienGoDecode::LowLevel;
+  for (std::size_t offset = kCmdFloatsBegin; offset < kCmdFloatsEnd; offset += 4) {
+    if (!std::isfinite(get_f32(data, offset))) return AlienGoDecode::NonFinite;
   }
-  out.mode = cmd.mode;
-  out.gait_type = cmd.gaitType;
-  out.speed_level = cmd.speedLevel;
-  out.foot_raise_m = cmd.dFootRaiseHeight;
-  out.body_height_m = cmd.dBodyHeight;
-  std::copy(cmd.position, cmd.position + 2, out.position.begin());
-  std::copy(cmd.rpy, cmd.rpy + 3, out.rpy.begin());
-  std::copy(cmd.velocity, cmd.velocity + 2, out.velocity.begin());
-  out.yaw_speed = cmd.yawSpeed;
+  out.mode = data[offsetof(sdk::HighCmd, mode)];
+  out.gait_type = data[offsetof(sdk::HighCmd, gaitType)];
+  out.speed_level = data[offsetof(sdk::HighCmd, speedLevel)];
+  out.foot_raise_m = get_f32(data, offsetof(sdk::HighCmd, dFootRaiseHeight));
+  out.body_height_m = get_f32(data, offsetof(sdk::HighCmd, dBodyHeight));
+  for (std::size_t i = 0; i < 2; ++i) out.position[i] = get_f32(data, offsetof(sdk::HighCmd, position) + 4 * i);
+  for (std::size_t i = 0; i < 3; ++i) out.rpy[i] = get_f32(data, offsetof(sdk::HighCmd, rpy) + 4 * i);
+  for (std::size_t i = 0; i < 2; ++i) out.velocity[i] = get_f32(data, offsetof(sdk::HighCmd, velocity) + 4 * i);
+  out.yaw_speed = get_f32(data, offsetof(sdk::HighCmd, yawSpeed));
   return AlienGoDecode::Ok;
 }
 
 void encode_high_cmd(const AlienGoCommand& command, std::uint8_t (&out)[kHighCmdBytes]) {
-  sdk::HighCmd cmd{};
-  cmd.levelFlag = sdk::HIGHLEVEL;
-  cmd.mode = static_cast<std::uint8_t>(command.mode);
-  cmd.gaitType = static_cast<std::uint8_t>(command.gait_type);
-  cmd.speedLevel = static_cast<std::uint8_t>(command.speed_level);
-  cmd.dFootRaiseHeight = command.foot_raise_m;
-  cmd.dBodyHeight = command.body_height_m;
-  std::copy(command.position.begin(), command.position.end(), cmd.position);
-  std::copy(command.rpy.begin(), command.rpy.end(), cmd.rpy);
-  std::copy(command.velocity.begin(), command.velocity.end(), cmd.velocity);
-  cmd.yawSpeed = command.yaw_speed;
-  sdk::store_crc(&cmd, sizeof cmd);
-  std::memcpy(out, &cmd, sizeof cmd);
+  std::memset(out, 0, sizeof out);
+  out[offsetof(sdk::HighCmd, levelFlag)] = sdk::HIGHLEVEL;
+  out[offsetof(sdk::HighCmd, mode)] = static_cast<std::uint8_t>(command.mode);
+  out[offsetof(sdk::HighCmd, gaitType)] = static_cast<std::uint8_t>(command.gait_type);
+  out[offsetof(sdk::HighCmd, speedLevel)] = static_cast<std::uint8_t>(command.speed_level);
+  put_f32(out, offsetof(sdk::HighCmd, dFootRaiseHeight), command.foot_raise_m);
+  put_f32(out, offsetof(sdk::HighCmd, dBodyHeight), command.body_height_m);
+  for (std::size_t i = 0; i < 2; ++i) put_f32(out, offsetof(sdk::HighCmd, position) + 4 * i, command.position[i]);
+  for (std::size_t i = 0; i < 3; ++i) put_f32(out, offsetof(sdk::HighCmd, rpy) + 4 * i, command.rpy[i]);
+  for (std::size_t i = 0; i < 2; ++i) put_f32(out, offsetof(sdk::HighCmd, velocity) + 4 * i, command.velocity[i]);
+  put_f32(out, offsetof(sdk::HighCmd, yawSpeed), command.yaw_speed);
+  sdk::store_crc(out, sizeof out);
 }
 
 AlienGoFeedback make_feedback(const RobotState& state, int mode) {
@@ -109,44 +121,44 @@ AlienGoFeedback make_feedback(const RobotState& state, int mode) {
 }
 
 void encode_high_state(const AlienGoFeedback& f, std::uint8_t (&out)[kHighStateBytes]) {
-  sdk::HighState s{};
-  s.levelFlag = sdk::HIGHLEVEL;
-  s.mode = static_cast<std::uint8_t>(f.mode);
-  for (int i = 0; i < 4; ++i) s.imu.quaternion[i] = static_cast<float>(f.quaternion_wxyz[i]);
-  put3(s.imu.gyroscope, f.gyroscope);
-  put3(s.imu.accelerometer, f.accelerometer);
-  put3(s.imu.rpy, f.rpy);
-  s.imu.temperature = static_cast<std::int8_t>(std::clamp(f.temperature_c, -128, 127));
-  put3(s.position, f.position);
-  put3(s.velocity, f.velocity);
-  s.yawSpeed = static_cast<float>(f.yaw_speed);
+  std::memset(out, 0, sizeof out);
+  out[offsetof(sdk::HighState, levelFlag)] = sdk::HIGHLEVEL;
+  out[offsetof(sdk::HighState, mode)] = static_cast<std::uint8_t>(f.mode);
+  for (std::size_t i = 0; i < 4; ++i) put_f32(out, kImuQuaternion + 4 * i, f.quaternion_wxyz[static_cast<int>(i)]);
+  put_vec(out, kImuGyroscope, f.gyroscope);
+  put_vec(out, kImuAccelerometer, f.accelerometer);
+  put_vec(out, kImuRpy, f.rpy);
+  out[kImuTemperature] = static_cast<std::uint8_t>(static_cast<std::int8_t>(std::clamp(f.temperature_c, -128, 127)));
+  put_vec(out, offsetof(sdk::HighState, position), f.position);
+  put_vec(out, offsetof(sdk::HighState, velocity), f.velocity);
+  put_f32(out, offsetof(sdk::HighState, yawSpeed), f.yaw_speed);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    put(s.footPosition2Body[leg], f.foot_position[leg]);
-    put(s.footSpeed2Body[leg], f.foot_velocity[leg]);
-    s.footForce[leg] = static_cast<std::int16_t>(std::clamp(f.foot_force[leg], -32768, 32767));
+    put_vec(out, offsetof(sdk::HighState, footPosition2Body) + kCartesianBytes * leg, f.foot_position[leg]);
+    put_vec(out, offsetof(sdk::HighState, footSpeed2Body) + kCartesianBytes * leg, f.foot_velocity[leg]);
+    const auto force = static_cast<std::int16_t>(std::clamp(f.foot_force[leg], -32768, 32767));
+    std::memcpy(out + offsetof(sdk::HighState, footForce) + 2 * leg, &force, sizeof force);
   }
-  sdk::store_crc(&s, sizeof s);
-  std::memcpy(out, &s, sizeof s);
+  sdk::store_crc(out, sizeof out);
 }
 
 bool decode_high_state(const std::uint8_t* data, std::size_t size, AlienGoFeedback& f) {
   if (data == nullptr || size != kHighStateBytes) return false;
   if (sdk::stored_crc(data, size) != sdk::frame_crc(data, size)) return false;
-  sdk::HighState s;
-  std::memcpy(&s, data, sizeof s);
-  f.mode = s.mode;
-  for (int i = 0; i < 4; ++i) f.quaternion_wxyz[i] = s.imu.quaternion[i];
-  f.gyroscope = {s.imu.gyroscope[0], s.imu.gyroscope[1], s.imu.gyroscope[2]};
-  f.accelerometer = {s.imu.accelerometer[0], s.imu.accelerometer[1], s.imu.accelerometer[2]};
-  f.rpy = {s.imu.rpy[0], s.imu.rpy[1], s.imu.rpy[2]};
-  f.temperature_c = s.imu.temperature;
-  f.position = {s.position[0], s.position[1], s.position[2]};
-  f.velocity = {s.velocity[0], s.velocity[1], s.velocity[2]};
-  f.yaw_speed = s.yawSpeed;
+  f.mode = data[offsetof(sdk::HighState, mode)];
+  for (std::size_t i = 0; i < 4; ++i) f.quaternion_wxyz[static_cast<int>(i)] = get_f32(data, kImuQuaternion + 4 * i);
+  f.gyroscope = get_vec(data, kImuGyroscope);
+  f.accelerometer = get_vec(data, kImuAccelerometer);
+  f.rpy = get_vec(data, kImuRpy);
+  f.temperature_c = static_cast<std::int8_t>(data[kImuTemperature]);
+  f.position = get_vec(data, offsetof(sdk::HighState, position));
+  f.velocity = get_vec(data, offsetof(sdk::HighState, velocity));
+  f.yaw_speed = get_f32(data, offsetof(sdk::HighState, yawSpeed));
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    f.foot_position[leg] = get(s.footPosition2Body[leg]);
-    f.foot_velocity[leg] = get(s.footSpeed2Body[leg]);
-    f.foot_force[leg] = s.footForce[leg];
+    f.foot_position[leg] = get_vec(data, offsetof(sdk::HighState, footPosition2Body) + kCartesianBytes * leg);
+    f.foot_velocity[leg] = get_vec(data, offsetof(sdk::HighState, footSpeed2Body) + kCartesianBytes * leg);
+    std::int16_t force;
+    std::memcpy(&force, data + offsetof(sdk::HighState, footForce) + 2 * leg, sizeof force);
+    f.foot_force[leg] = force;
   }
   return true;
 }

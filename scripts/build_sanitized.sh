@@ -1,0 +1,16 @@
+#!/usr/bin/env bash
+# Configures and builds cerebellum with clang, AddressSanitizer and UndefinedBehaviorSanitizer
+# (and libFuzzer's coverage instrumentation) into ./build-sanitize: the tests and the libFuzzer
+# programs of tests/fuzz (docs/fuzzing.md). Usage: scripts/build_sanitized.sh [cmake targets...]
+set -euo pipefail
+root=$(cd "$(dirname "$0")/.." && pwd)
+flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+CC=clang CXX=clang++ cmake -S "$root" -B "$root/build-sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
+  -DCEREBELLUM_FUZZ=ON -DCEREBELLUM_BUILD_BENCH=OFF > "$root/build-sanitize.configure.log"
+if [[ $# -gt 0 ]]; then
+  cmake --build "$root/build-sanitize" -j"$(nproc)" --target "$@"
+else
+  cmake --build "$root/build-sanitize" -j"$(nproc)"
+fi
