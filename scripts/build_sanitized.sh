@@ -8,7 +8,7 @@ flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefin
 CC=clang CXX=clang++ cmake -S "$root" -B "$root/build-sanitize" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DCEREBELLUM_FUZZ=ON -DCEREBELLUM_BUILD_BENCH=OFF > "$root/build-sanitize.configure.log"
+  -DCEREBELLUM_FUZZ=ON -DCEREBELLUM_SANITIZED=ON -DCEREBELLUM_BUILD_BENCH=OFF > "$root/build-sanitize.configure.log"
 if [[ $# -gt 0 ]]; then
   cmake --build "$root/build-sanitize" -j"$(nproc)" --target "$@"
 else

@@ -34,7 +34,18 @@ MujocoBackend::MujocoBackend(const MujocoBackendConfig& config) : config_(config
     throw std::runtime_error("model " + config.model_path + " failed to load: " + error);
   }
   data_ = mj_makeData(model_);
+  // a constructor that throws runs no destructor: free the model here (LeakSanitizer found it)
+  try {
+    find_model_elements();
+  } catch (...) {
+    mj_deleteData(data_);
+    mj_deleteModel(model_);
+    throw;
+  }
+}
 
+void MujocoBackend::find_model_elements() {
+  const MujocoBackendConfig& config = config_;
   // joint and actuator addresses by name, so the model's element order does not matter
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     for (std::size_t j = 0; j < kJointsPerLeg; ++j) {

@@ -68,6 +68,9 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   void apply_disturbances();
 
   MujocoBackendConfig config_;
+  // the constructor's lookups and start pose (throws on a model without them)
+  void find_model_elements();
+
   mjModel_* model_ = nullptr;
   mjData_* data_ = nullptr;
   JointCommand command_{};
