@@ -17,7 +17,7 @@
 
 namespace lcm {
 class LCM;
-class ReceiveBuffer;
+struct ReceiveBuffer;
 }  // namespace lcm
 
 namespace cerebellum {
