@@ -20,6 +20,7 @@ ModeSetConfig mode_set_config(const McConfig& config) {
   modes.damping_kd = config.safety.damping_kd;
   modes.stand_up = config.stand_up;
   modes.locomotion_stand = config.locomotion_stand;
+  modes.motions = load_motion_library(config.motions);
   return modes;
 }
 

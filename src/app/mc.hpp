@@ -31,6 +31,8 @@ class Mc {
   // throws std::logic_error when the robot is not simulated
   Simulation& simulation();
   HighLevelMachine& machine() { return machine_; }
+  // where the high-level interface hands over uploaded user gaits
+  UserGaitSlot& user_gait_slot() { return modes_.user_gait_slot(); }
   SourceArbiter& arbiter() { return arbiter_; }
   ControlLoop& loop() { return loop_; }
   const McConfig& config() const { return config_; }

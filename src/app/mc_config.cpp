@@ -105,6 +105,25 @@ std::string find_default_model() {
   return (fs::path(CEREBELLUM_INSTALL_MODEL_DIR) / "cyberdog2.xml").string();
 }
 
+std::string find_default_motions() {
+  for (const char* dir : {CEREBELLUM_SOURCE_MOTION_DIR, CEREBELLUM_INSTALL_MOTION_DIR}) {
+    if (fs::is_directory(dir)) return dir;
+  }
+  return CEREBELLUM_INSTALL_MOTION_DIR;
+}
+
+void read_motions(const SectionReader& section, const fs::path& base_dir, MotionFolders& motions) {
+  for (const auto& [key, folder] : {std::pair<const char*, std::string*>{"folder", &motions.folder},
+                                    std::pair<const char*, std::string*>{"user_folder", &motions.user_folder}}) {
+    std::string given;
+    section.text(key, given);
+    if (given.empty()) continue;
+    const fs::path path(given);
+    *folder = (path.is_absolute() ? path : base_dir / path).lexically_normal().string();
+    if (!fs::is_directory(*folder)) section.fail(std::string("motions.") + key, "is not a folder: " + *folder);
+  }
+}
+
 void read_robot(const SectionReader& section, const fs::path& base_dir, MujocoBackendConfig& robot) {
   std::string model;
   section.text("model", model);
@@ -179,6 +198,7 @@ void read_highlevel(const SectionReader& section, HighLevelLcmConfig& highlevel)
 McConfig default_config() {
   McConfig config;
   config.robot.model_path = find_default_model();
+  config.motions.folder = find_default_motions();
   return config;
 }
 
@@ -194,7 +214,7 @@ McConfig load_config(const std::string& path) {
   if (root.IsNull()) return config;
   const SectionReader top(root, path, "<top>",
                           {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk", "highlevel", "aliengo",
-                           "sim_truth", "sim_command"});
+                           "motions", "sim_truth", "sim_command"});
   const fs::path base_dir = fs::absolute(path).parent_path();
 
   if (root["mc"]) {
@@ -244,6 +264,9 @@ McConfig load_config(const std::string& path) {
     read_highlevel(SectionReader(root["highlevel"], path, "highlevel",
                                  {"enabled", "command_url", "response_url", "odometry_url", "response_keepalive_s"}),
                    config.highlevel);
+  }
+  if (root["motions"]) {
+    read_motions(SectionReader(root["motions"], path, "motions", {"folder", "user_folder"}), base_dir, config.motions);
   }
   if (root["aliengo"]) {
     const SectionReader s(root["aliengo"], path, "aliengo",

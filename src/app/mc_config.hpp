@@ -14,6 +14,7 @@
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
 #include "io/udp_aliengo/udp_aliengo_config.hpp"
 #include "modes/locomotion_stand.hpp"
+#include "motions/motion_folder.hpp"
 #include "safety/command_guard.hpp"
 
 namespace cerebellum {
@@ -36,6 +37,7 @@ struct McConfig {
   MotorSdkConfig motor_sdk;
   HighLevelLcmConfig highlevel;
   AlienGoUdpConfig aliengo;
+  MotionFolders motions;         // mode 62's motion files
   SimTruthConfig sim_truth;      // simulation only
   SimControlConfig sim_command;  // simulation only
 };

@@ -60,7 +60,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     }
     std::optional<LcmHighLevelAdapter> highlevel;
     if (config.highlevel.enabled) {
-      highlevel.emplace(mc.machine(), config.highlevel, config.loop_period_s, stderr);
+      highlevel.emplace(mc.machine(), mc.user_gait_slot(), config.highlevel, config.loop_period_s, stderr);
       loop.add_observer(*highlevel);
     }
     std::optional<UdpAliengoAdapter> aliengo;

@@ -42,13 +42,14 @@ CommandQueue::CommandQueue(double tick_period_s) : tick_period_s_(tick_period_s)
   before_last_receive_.reserve(kCapacity + 1);
 }
 
-CommandQueue::Receipt CommandQueue::receive(const HighLevelCommand& command, double time_s) {
+CommandQueue::Receipt CommandQueue::receive(const HighLevelCommand& command, double time_s, bool motion_running) {
   client_seen_ = true;
   last_receive_s_ = time_s;
   if (command.life_count == last_life_count_) return Receipt::Heartbeat;
   if (!command_is_finite(command)) return Receipt::Rejected;
   last_life_count_ = command.life_count;
   if (command.mode == -1) return Receipt::Ignored;
+  if (command.mode == kMotionMode && motion_running) return Receipt::Dropped;
 
   const long duration_ticks = std::lround(std::floor(std::max(0, command.duration) * 1e-3 / tick_period_s_ + 1e-9));
   // kept (within the reserved capacity) until the machine has accepted or refused the command
@@ -71,10 +72,10 @@ CommandQueue::Receipt CommandQueue::receive(const HighLevelCommand& command, dou
   return Receipt::Queued;
 }
 
-void CommandQueue::tick(bool switching) {
+void CommandQueue::tick(bool switching, bool hold_front) {
   if (entries_.empty() || switching) return;
   Entry& front = entries_.front();
-  if (front.ticks_left < 0) return;
+  if (front.ticks_left < 0 || (hold_front && front.ticks_left <= 1)) return;
   if (--front.ticks_left > 0) return;
   const HighLevelCommand finished = front.command;
   last_finished_ = finished;

@@ -21,13 +21,16 @@ class CommandQueue {
     Ignored,    // mode -1
     Rejected,   // NaN/Inf in a field: refreshes the timer, changes nothing else
     QueueFull,  // more than kCapacity timed entries waiting
+    Dropped,    // a mode-62 command while a motion runs (the reference drops it)
   };
 
   explicit CommandQueue(double tick_period_s);
 
-  Receipt receive(const HighLevelCommand& command, double time_s);
-  // one control tick has passed; while `switching` the running entry's time does not count
-  void tick(bool switching);
+  // motion_running: a motion (mode 62) runs now, so a new mode-62 command is dropped
+  Receipt receive(const HighLevelCommand& command, double time_s, bool motion_running = false);
+  // one control tick has passed; while `switching` the running entry's time does not count;
+  // while `hold_front` the running entry does not end (its time counts down to its last tick)
+  void tick(bool switching, bool hold_front = false);
   // a client has spoken and then been silent for 0.5 s
   bool timed_out(double time_s) const;
   // forget every entry and the client (after a timeout or a mode forced by the MC); the last

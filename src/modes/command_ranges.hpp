@@ -47,6 +47,17 @@ struct LocomotionStandRanges {
   double default_height_m = kDefaultBodyHeightM;
 };
 
+// a user gait's steps (gait 110): pose and swing heights as decoded from the uploaded parameters
+struct UserGaitRanges {
+  Range roll{-0.3, 0.3};
+  Range pitch = LocomotionStandRanges{}.pitch;
+  Range yaw_offset{-0.3, 0.3};
+  Range height = LocomotionStandRanges{}.height;  // 0 in the file: the default height
+  Range step_height{0.0, 0.10};                   // packed in mm, up to 999 on the wire
+  Range landing_gain{0.01, 10.0};                 // outside: 1.0 (reference)
+  Range friction{0.1, 1.0};                       // outside: the MPC's own (reference: "sane range")
+};
+
 // mode 11 velocity limits of a gait (gait table; clamped, not rejected)
 struct VelocityLimits {
   Eigen::Vector3d min;  // vx, vy (m/s), yaw rate (rad/s)

@@ -68,11 +68,17 @@ bool HighLevelMachine::holds_lease(const TimedCommand& input) {
 
 bool HighLevelMachine::take_input(const TimedCommand& input) {
   counters_.received.fetch_add(1, std::memory_order_relaxed);
-  switch (queue_.receive(input.command, input.received_s)) {
+  const bool motion_running = current_ != nullptr && current_->id() == ModeId::Motion && current_->holds_entry();
+  switch (queue_.receive(input.command, input.received_s, motion_running)) {
     case CommandQueue::Receipt::RunsNow:
     case CommandQueue::Receipt::Queued: counters_.new_commands.fetch_add(1, std::memory_order_relaxed); return true;
     case CommandQueue::Receipt::Rejected: counters_.rejected_non_finite.fetch_add(1, std::memory_order_relaxed); break;
     case CommandQueue::Receipt::QueueFull: counters_.queue_full.fetch_add(1, std::memory_order_relaxed); break;
+    case CommandQueue::Receipt::Dropped:
+      counters_.motions_dropped.fetch_add(1, std::memory_order_relaxed);
+      refusals_.try_push({input.command.mode, input.command.gait_id, static_cast<int>(ModeId::Motion),
+                          "a motion is running: mode-62 commands are dropped until it ends", nullptr});
+      break;
     case CommandQueue::Receipt::Heartbeat:
     case CommandQueue::Receipt::Ignored: break;
   }
@@ -215,7 +221,10 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
     }
   }
   watch_body(state);
-  queue_.tick(current_->progress_percent() < 100);
+  // a motion's entry lasts at least as long as the motion; the time of other entries starts once
+  // their mode has finished switching
+  const bool holds_entry = current_->holds_entry();
+  queue_.tick(!holds_entry && current_->progress_percent() < 100, holds_entry);
   current_->run(state, command);
   update_status(state);
 }

@@ -23,6 +23,7 @@ struct CommandCounters {
   std::atomic<std::uint64_t> new_commands{0};
   std::atomic<std::uint64_t> rejected_non_finite{0};
   std::atomic<std::uint64_t> queue_full{0};
+  std::atomic<std::uint64_t> motions_dropped{0};  // mode-62 commands while a motion ran
   std::atomic<std::uint64_t> ring_overflow{0};
   std::atomic<std::uint64_t> banned_transitions{0};
   std::atomic<std::uint64_t> timeouts{0};

@@ -24,7 +24,7 @@ const char* unavailable_gait_reason(int gait_id) {
   if (const GaitSpec* gait = find_gait(gait_id)) {
     return kUnavailableReasons[static_cast<std::size_t>(gait - kGaitTable.data())].c_str();
   }
-  if (gait_id == 110) return "gait 110 (uploaded user gait) not available yet";
+  if (gait_id == kUserGaitId) return "gait 110 (uploaded user gait) not available in this MC";
   if (gait_id >= 80 && gait_id <= 100) return "user gait slots 80..100 not available yet";
   return "mode 11 has no such gait";
 }

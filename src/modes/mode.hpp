@@ -27,6 +27,9 @@ class Mode {
   virtual int gait_id() const = 0;
   // order_process_bar: percent of the mode's transition done; 100 once it holds its target
   virtual int progress_percent() const = 0;
+  // true while the command queue must keep the mode's entry running past its duration (a motion
+  // runs to its end); the entry's time still counts meanwhile
+  virtual bool holds_entry() const { return false; }
 };
 
 }  // namespace cerebellum

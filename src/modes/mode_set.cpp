@@ -2,6 +2,8 @@
 
 #include <cmath>
 #include <memory>
+#include <stdexcept>
+#include <string>
 
 #include "control/locomotion/gait_table.hpp"
 #include "control/qp/goldfarb_idnani_solver.hpp"
@@ -31,7 +33,10 @@ ModeSet::ModeSet(const ModeSetConfig& config)
       lifted_(default_lifted_config()),
       walking_(walking_config(config), std::make_unique<qp::GoldfarbIdnaniSolver>()),
       passive_trot_(walking_, PassiveFollowConfig{}, config.loop_period_s),
-      locomotion_(gaits_) {
+      user_gait_(walking_, user_gait_slot_),
+      locomotion_(gaits_),
+      motions_(config.motions),
+      motion_(motions_, {&pose_control_, &qp_stand_, &locomotion_, &recovery_stand_}, user_gait_slot_) {
   // the stepping gaits of the table run on the MPC locomotion controller; the stands on the
   // configured one
   LocomotionGait& stand =
@@ -39,6 +44,16 @@ ModeSet::ModeSet(const ModeSetConfig& config)
   for (const GaitSpec& gait : kGaitTable) gaits_.add(gait.id, gait_steps(gait) ? walking_ : stand);
   // the passive trot drives the same controller, following pulls on the trunk
   gaits_.add(kPassiveTrotGaitId, passive_trot_);
+  // the uploaded gait runs on it too
+  gaits_.add(kUserGaitId, user_gait_);
+  for (const Motion& motion : motions_.motions()) {
+    for (std::size_t i = 0; i < motion.steps.size(); ++i) {
+      if (const char* reason = motion_.check_step(motion.steps[i])) {
+        throw std::invalid_argument(motion.origin + ": motion " + std::to_string(motion.id) + ", step " +
+                                    std::to_string(i + 1) + ": " + reason);
+      }
+    }
+  }
 }
 
 void ModeSet::add_to(HighLevelMachine& machine) {
@@ -49,6 +64,7 @@ void ModeSet::add_to(HighLevelMachine& machine) {
   machine.add_mode(pose_control_);
   machine.add_mode(lifted_);
   machine.add_mode(locomotion_);
+  machine.add_mode(motion_);
 }
 
 }  // namespace cerebellum

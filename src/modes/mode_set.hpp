@@ -8,11 +8,15 @@
 #include "modes/locomotion_stand.hpp"
 #include "modes/locomotion_mode.hpp"
 #include "modes/locomotion_stand_gait.hpp"
+#include "modes/motion.hpp"
+#include "modes/motion_mode.hpp"
 #include "modes/passive_modes.hpp"
 #include "modes/passive_trot_gait.hpp"
 #include "modes/pose_control_mode.hpp"
 #include "modes/qp_stand_mode.hpp"
 #include "modes/recovery_stand_mode.hpp"
+#include "modes/user_gait.hpp"
+#include "modes/user_gait_runner.hpp"
 #include "modes/walking_gaits.hpp"
 
 namespace cerebellum {
@@ -22,10 +26,14 @@ struct ModeSetConfig {
   double damping_kd = 4.0;  // PureDamper's joint damping, and the walking gaits' when the MPC fails
   StandUpConfig stand_up = default_stand_up_config();
   LocomotionStand locomotion_stand = LocomotionStand::Mpc;
+  // mode 62's named motions (motions/ reads them from files); every step is checked by the mode
+  // it runs in when the set is built
+  MotionLibrary motions;
 };
 
 class ModeSet {
  public:
+  // throws std::invalid_argument naming the motion file and step that its mode refuses
   explicit ModeSet(const ModeSetConfig& config);
   ModeSet(const ModeSet&) = delete;
   ModeSet& operator=(const ModeSet&) = delete;
@@ -37,6 +45,10 @@ class ModeSet {
   const WalkingGaits& walking() const { return walking_; }
   const LocomotionStandGait& qp_stand_gait() const { return qp_stand_gait_; }
   const PassiveTrotGait& passive_trot() const { return passive_trot_; }
+  const MotionMode& motion() const { return motion_; }
+  const UserGaitRunner& user_gait() const { return user_gait_; }
+  // where the high-level interface hands over a newly uploaded user gait (any thread)
+  UserGaitSlot& user_gait_slot() { return user_gait_slot_; }
   // mode 11's gaits by id
   const GaitRegistry& gaits() const { return gaits_; }
 
@@ -50,8 +62,12 @@ class ModeSet {
   GaitRegistry gaits_;
   WalkingGaits walking_;
   PassiveTrotGait passive_trot_;
+  UserGaitSlot user_gait_slot_;
+  UserGaitRunner user_gait_;
   LocomotionStandGait qp_stand_gait_;
   LocomotionMode locomotion_;
+  MotionLibrary motions_;
+  MotionMode motion_;
 };
 
 }  // namespace cerebellum

@@ -36,6 +36,11 @@ class WalkingGaits final : public LocomotionGait {
   bool failed() const { return !controller_.healthy(); }
   const LocomotionController& controller() const { return controller_; }
   void anchor_position_at_trunk(const RobotState& state) { controller_.anchor_position_at_trunk(state); }
+  // a user gait drives the controller directly: its schedule once, then its own targets
+  void play(std::shared_ptr<const ContactSequence> sequence, const RobotState& state) {
+    controller_.play(std::move(sequence), state);
+  }
+  void steer(const LocomotionTarget& target) { controller_.set_command(target); }
 
  private:
   WalkingGaitsConfig config_;

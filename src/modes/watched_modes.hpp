@@ -6,9 +6,10 @@
 
 namespace cerebellum {
 
-// the modes that stand on their feet (3, 11, 21): tipping over and being picked up are watched
+// the modes that stand on their feet (3, 11, 21 and the motions made of them): tipping over and
+// being picked up are watched
 inline bool watches_body(ModeId mode) {
-  return mode == ModeId::QpStand || mode == ModeId::Locomotion || mode == ModeId::PoseControl;
+  return mode == ModeId::QpStand || mode == ModeId::Locomotion || mode == ModeId::PoseControl || mode == ModeId::Motion;
 }
 
 // the foot workspace is watched while walking: the other standing modes lift feet on purpose

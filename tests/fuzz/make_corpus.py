@@ -88,6 +88,13 @@ write("user_gait_file", "parameters", "# Gait Params\n[[step]]\nmode = 11\ngait_
 write("user_gait_file", "deep_key", "# Gait Def\n" + "a." * 200 + "b = 1\n")
 write("user_gait_file", "no_header", "[[section]]\ncontact = [1, 1, 1, 1]\nduration = 1\n")
 
+# motion files (the shipped ones are seeds too)
+import glob
+for path in sorted(glob.glob(os.path.join(repo, "config", "motions", "*.toml"))):
+    write("motion_file", os.path.basename(path)[:-5], open(path).read())
+write("motion_file", "nan_step", "id = 80\nname = \"n\"\n[[step]]\nmode = 21\ngait_id = 0\nrpy_des = [nan, 0, 0]\nduration = 5\n")
+write("motion_file", "no_steps", "id = 80\nname = \"n\"\n")
+
 # shared-memory command frames: four leg_control_t (4 joints of 5 floats, int32 flags)
 def legs(p, v, kp, kd, t):
     return b"".join(struct.pack("<20fi", *([p, v, kp, kd, t] * 4), 1) for _ in range(4))

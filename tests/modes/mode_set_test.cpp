@@ -29,6 +29,11 @@ TEST(ModeSet, WalkingGaitsRunOnTheMpcTheStandsOnTheConfiguredControllerAndGaitFo
   }
 }
 
+TEST(ModeSet, TheUploadedUserGaitRunsOnItsOwnRunner) {
+  ModeSet modes(ModeSetConfig{});
+  EXPECT_EQ(modes.gaits().find(kUserGaitId), &modes.user_gait());
+}
+
 TEST(ModeSet, OtherGaitIdsHaveNoController) {
   const ModeSet modes(ModeSetConfig{});
   for (int id = 0; id <= GaitRegistry::kMaxGaitId; ++id) {
@@ -36,6 +41,7 @@ TEST(ModeSet, OtherGaitIdsHaveNoController) {
     for (int walking : kWalkingGaitIds) listed |= walking == id;
     for (int stand : kStandGaitIds) listed |= stand == id;
     for (int passive : kPassiveTrotGaitIds) listed |= passive == id;
+    listed |= id == kUserGaitId;
     if (!listed) {
       EXPECT_EQ(modes.gaits().find(id), nullptr) << id;
     }

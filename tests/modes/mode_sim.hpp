@@ -17,6 +17,7 @@
 #include "estimation/body_state_estimator.hpp"
 #include "modes/high_level_machine.hpp"
 #include "modes/mode_set.hpp"
+#include "motions/motion_folder.hpp"
 
 namespace cerebellum::testing {
 
@@ -27,13 +28,14 @@ inline HighLevelCommand command(ModeId mode, int gait = 0) {
   return c;
 }
 
-// the MC's modes (modes/mode_set.hpp) with mode 11's stands on the QP stand
+// the MC's modes (modes/mode_set.hpp) with mode 11's stands on the QP stand and the shipped motions
 inline ModeSetConfig mode_sim_config() {
   ModeSetConfig config;
   config.loop_period_s = 0.002;
   config.damping_kd = GuardLimits{}.damping_kd;
   config.stand_up = default_stand_up_config();
   config.locomotion_stand = LocomotionStand::Qp;
+  config.motions = load_motion_library({CEREBELLUM_SOURCE_DIR "/config/motions", ""});
   return config;
 }
 
@@ -92,6 +94,10 @@ struct ModeSim {
     return {std::atan2(r(2, 1), r(2, 2)), std::asin(-std::clamp(r(2, 0), -1.0, 1.0)), std::atan2(r(1, 0), r(0, 0))};
   }
   double true_height() const { return backend.ground_truth().position[2]; }
+  Eigen::Vector3d true_position() const {
+    const GroundTruth t = backend.ground_truth();
+    return {t.position[0], t.position[1], t.position[2]};
+  }
   // world position of a foot centre from the simulator
   Eigen::Vector3d true_foot(std::size_t leg) const {
     static const char* const kNames[kNumLegs] = {"FR_foot", "FL_foot", "RR_foot", "RL_foot"};

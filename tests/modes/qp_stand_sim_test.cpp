@@ -147,20 +147,20 @@ TEST(LocomotionStandSim, VelocityChangesDoNotRestartTheStand) {
   EXPECT_TRUE(sim.stand_gait.stand().controller().frame().foothold(0) == foothold);
 }
 
-TEST(LocomotionStandSim, UnregisteredWalkingGaitIsBannedWithAReason) {
+TEST(LocomotionStandSim, AUserGaitWithNothingUploadedIsBannedWithAReason) {
   ModeSim sim;
   sim.run(3.0);
   sim.send(loco(1), 1.0);
   while (sim.machine.refusals().try_pop()) {
   }
-  // the walking gaits are registered (the MC's mode set); an uploaded user gait is not
+  // the walking gaits are registered (the MC's mode set); the user gait has nothing to run
   sim.send(loco(110), 0.1);
   EXPECT_EQ(sim.status().mode, 11);
   EXPECT_EQ(sim.status().gait_id, 1);
   EXPECT_EQ(sim.status().switch_status, SwitchStatus::BanTransition);
   const auto note = sim.machine.refusals().try_pop();
   ASSERT_TRUE(note.has_value());
-  EXPECT_STREQ(note->reason, "gait 110 (uploaded user gait) not available yet");
+  EXPECT_STREQ(note->reason, "no user gait uploaded yet (user_gait_file: a definition and its parameters)");
 }
 
 // sideways offset of the trunk from the centre of its feet (simulator truth)

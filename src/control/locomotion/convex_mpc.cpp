@@ -151,7 +151,7 @@ void ConvexMpc::build(const MpcInput& input) {
   problem_.linear.noalias() = 2.0 * weighted.transpose() * error;
 
   // friction pyramid and force limits, five rows per foot force
-  const double mu = config_.friction;
+  const double mu = input.friction > 0.0 ? input.friction : config_.friction;
   const double inf = std::numeric_limits<double>::infinity();
   for (int f = 0; f < n / 3; ++f) {
     const int col = 3 * f;

@@ -49,6 +49,8 @@ struct MpcInput {
   }
   // contact table over the horizon
   std::array<std::array<bool, kNumLegs>, kMpcHorizon> contact;
+  // friction coefficient of the ground for this solve; 0: the configured one
+  double friction = 0.0;
 };
 
 struct MpcOutput {

@@ -66,11 +66,19 @@ GaitPattern stand_bridge_pattern(int segments) {
 GaitScheduler::GaitScheduler(double segment_s) : segment_s_(segment_s), pattern_(*gait_pattern(kStandGaitId)) {}
 
 double GaitScheduler::cycle_phase() const {
+  if (sequence_ != nullptr) return 0.0;
   return (segment_ + time_in_segment_s_ / segment_s_) / pattern_.period_segments;
+}
+
+void GaitScheduler::play(std::shared_ptr<const ContactSequence> sequence) {
+  sequence_ = std::move(sequence);
+  segment_ = 0;
+  time_in_segment_s_ = 0.0;
 }
 
 void GaitScheduler::set_pattern(const GaitPattern& pattern) {
   const double phase = cycle_phase();
+  sequence_.reset();
   pattern_ = pattern;
   const double position = phase * pattern_.period_segments;
   segment_ = std::clamp(static_cast<int>(std::floor(position)), 0, pattern_.period_segments - 1);
@@ -81,18 +89,43 @@ void GaitScheduler::advance(double dt_s) {
   time_in_segment_s_ += dt_s;
   while (time_in_segment_s_ >= segment_s_ - 1e-12) {
     time_in_segment_s_ -= segment_s_;
-    segment_ = (segment_ + 1) % pattern_.period_segments;
+    if (sequence_ != nullptr) {
+      segment_ = std::min(segment_ + 1, sequence_->segments());  // stays at the end: standing
+    } else {
+      segment_ = (segment_ + 1) % pattern_.period_segments;
+    }
   }
   time_in_segment_s_ = std::max(0.0, time_in_segment_s_);
 }
 
 bool GaitScheduler::in_stance(std::size_t leg, int segment) const {
+  if (sequence_ != nullptr) return sequence_->in_stance(leg, segment);
   const int n = pattern_.period_segments;
   const int since_start = ((segment - pattern_.offsets[leg]) % n + n) % n;
   return since_start < pattern_.stance[leg];
 }
 
 LegPhase GaitScheduler::leg_phase(std::size_t leg) const {
+  if (sequence_ != nullptr) {
+    LegPhase phase;
+    if (segment_ >= sequence_->segments()) return phase;  // standing after the end
+    const ContactSequence::Run run = sequence_->run(leg, segment_);
+    const double share = (segment_ - run.first + time_in_segment_s_ / segment_s_) / run.length;
+    // the duration of the other kind of run next to it, for footholds and the estimator
+    const int next = run.first + run.length;
+    const int other = next < sequence_->segments() ? sequence_->run(leg, next).length : run.length;
+    phase.stance = sequence_->in_stance(leg, segment_);
+    if (phase.stance) {
+      phase.stance_phase = share;
+      phase.stance_duration_s = run.length * segment_s_;
+      phase.swing_duration_s = other * segment_s_;
+    } else {
+      phase.swing_phase = share;
+      phase.swing_duration_s = run.length * segment_s_;
+      phase.stance_duration_s = other * segment_s_;
+    }
+    return phase;
+  }
   const int n = pattern_.period_segments;
   const double position = segment_ + time_in_segment_s_ / segment_s_;
   double since_start = std::fmod(position - pattern_.offsets[leg] + n, static_cast<double>(n));

@@ -3,8 +3,10 @@
 #pragma once
 
 #include <array>
+#include <memory>
 #include <optional>
 
+#include "control/locomotion/contact_sequence.hpp"
 #include "control/locomotion/gait_table.hpp"
 #include "core/joint_layout.hpp"
 
@@ -45,14 +47,23 @@ struct LegPhase {
   double swing_duration_s = 0.0;
 };
 
-// runs a pattern in time: phase per leg and the contact table of the MPC horizon
+// runs a pattern in time (or a contact sequence once): phase per leg and the contact table of the
+// MPC horizon
 class GaitScheduler {
  public:
   explicit GaitScheduler(double segment_s = kGaitSegmentS);
 
-  // switch pattern, keeping the cycle phase (fraction of the cycle) continuous
+  // switch pattern, keeping the cycle phase (fraction of the cycle) continuous; ends a sequence
   void set_pattern(const GaitPattern& pattern);
   const GaitPattern& pattern() const { return pattern_; }
+  // play a sequence from its first segment; the pattern waits until set_pattern() is called again
+  void play(std::shared_ptr<const ContactSequence> sequence);
+  // a sequence is being played (finished or not)
+  bool playing() const { return sequence_ != nullptr; }
+  // the played sequence has reached its end (every leg stands from here on)
+  bool sequence_finished() const { return sequence_ != nullptr && segment_ >= sequence_->segments(); }
+  // seconds since the sequence started
+  double sequence_time_s() const { return segment_ * segment_s_ + time_in_segment_s_; }
 
   void advance(double dt_s);
   LegPhase leg_phase(std::size_t leg) const;
@@ -74,7 +85,8 @@ class GaitScheduler {
 
   double segment_s_;
   GaitPattern pattern_;
-  int segment_ = 0;  // current segment in the cycle
+  std::shared_ptr<const ContactSequence> sequence_;
+  int segment_ = 0;  // current segment in the cycle (in the sequence while one is played)
   double time_in_segment_s_ = 0.0;
 };
 

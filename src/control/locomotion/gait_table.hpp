@@ -35,6 +35,8 @@ inline constexpr int kStandWithoutPushRecoveryGaitId = 31;
 inline constexpr int kVariableTrotGaitId = 26;
 // the passive trot ("walk the dog"): stands until pulled, then trots along with the pull
 inline constexpr int kPassiveTrotGaitId = 4;
+// the uploaded user gait (user_gait_file), run by mode 11 and mode 62 with this gait id
+inline constexpr int kUserGaitId = 110;
 
 struct GaitSpec {
   int id;

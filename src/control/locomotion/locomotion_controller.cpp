@@ -117,9 +117,11 @@ void LocomotionController::post_mpc(const RobotState& state) {
   in.x0 << state.rpy, state.position_world, state.omega_world, state.velocity_world, -robot::kGravityMPerS2;
   // yaw without wrap: the reference continues from the current yaw
   const double yaw = state.rpy.z();
-  const double yaw_offset = std::clamp(wrap_angle(yaw_des_ - yaw), -0.2, 0.2);
+  const UserStepTargets no_user_step;
+  const UserStepTargets& user = target_.user_step ? *target_.user_step : no_user_step;
+  const double yaw_offset = std::clamp(wrap_angle(yaw_des_ + user.yaw_offset_rad - yaw), -0.2, 0.2);
   const double pitch_ref = target_.pitch_rad + state.ground.pitch_along(yaw);
-  const double roll_ref = state.ground.roll_along(yaw);
+  const double roll_ref = user.roll_rad + state.ground.roll_along(yaw);
   // the reference turns with the commanded yaw rate: velocity and position follow the arc
   const Eigen::Vector3d start(position_des_.x(), position_des_.y(), state.position_world.z());
   Eigen::Vector3d position = start;
@@ -143,6 +145,7 @@ void LocomotionController::post_mpc(const RobotState& state) {
                      : Eigen::Vector3d(foothold_world(leg, phase, state) - com_world);
   }
   in.contact = scheduler_.horizon_contacts<kMpcHorizon>();
+  in.friction = user.friction;
   worker_.post(in);
 }
 
@@ -184,6 +187,24 @@ void LocomotionController::command_stance_leg(std::size_t leg, const RobotState&
 Eigen::Vector3d LocomotionController::foothold_world(std::size_t leg, const LegPhase& phase,
                                                      const RobotState& state) const {
   const double remaining_s = (1.0 - phase.swing_phase) * phase.swing_duration_s;
+  if (target_.user_step) {
+    // a user gait names the landing point: from under the hip at touchdown, corrected by the
+    // velocity error times the step's landing gain
+    const UserStepTargets& step = *target_.user_step;
+    const Eigen::Vector3d hip = hip_on_ground_world(leg, state, remaining_s, remaining_s);
+    const double yaw_touchdown = state.rpy.z() + velocity_.z() * remaining_s;
+    const Eigen::Vector2d offset = Eigen::Rotation2Dd(yaw_touchdown) * step.landing_offset_m[leg];
+    const Eigen::Vector3d velocity_des_world =
+        yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
+    Eigen::Vector2d feedback =
+        step.landing_gain * config_.foothold.velocity_gain * (state.velocity_world - velocity_des_world).head<2>();
+    const double reach = config_.foothold.max_offset_forward_m;
+    feedback = feedback.cwiseMax(-reach).cwiseMin(reach);
+    Eigen::Vector3d foothold = hip;
+    foothold.head<2>() += offset + feedback;
+    foothold.z() = state.ground.height_at(foothold.x(), foothold.y()) + robot::kFootRadius;
+    return foothold;
+  }
   // the hip where the body will be at touchdown, turned on by half the stance so that the
   // foot is under the hip in the middle of its stance
   const Eigen::Vector3d hip = hip_on_ground_world(leg, state, remaining_s, remaining_s + 0.5 * phase.stance_duration_s);
@@ -201,8 +222,11 @@ void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& ph
   const Eigen::Vector3d foothold = foothold_world(leg, phase, state);
   // in a hop the body's own rise clears the ground: lifting the feet the full step height in the
   // air swings the legs hard enough to pitch the body
-  const double lift = legs_swing_together(scheduler_.pattern()) ? config_.hop_step_height_fraction : 1.0;
-  const double height = lift * (is_front_leg(leg) ? target_.step_height_front_m : target_.step_height_rear_m);
+  const double lift =
+      !scheduler_.playing() && legs_swing_together(scheduler_.pattern()) ? config_.hop_step_height_fraction : 1.0;
+  const double height = target_.user_step
+                            ? target_.user_step->step_height_m[leg]
+                            : lift * (is_front_leg(leg) ? target_.step_height_front_m : target_.step_height_rear_m);
   const SwingPoint point =
       swing_point(swing_start_[leg], foothold, height, phase.swing_phase, std::max(phase.swing_duration_s, 1e-3));
 
@@ -269,6 +293,18 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
   }
 }
 
+void LocomotionController::play(std::shared_ptr<const ContactSequence> sequence, const RobotState& state) {
+  scheduler_.play(std::move(sequence));
+  gait_change_pending_ = false;
+  bridging_ = false;
+  tick_in_segment_ = 0;  // the sequence's segments are the MPC's
+  // a foot in the air (none from a stand) swings on from where it is
+  const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    swing_start_[leg] = state.position_world + body_to_world * state.foot_position_body[leg];
+  }
+}
+
 void LocomotionController::compute(const RobotState& state, JointCommand& command) {
   ramp_velocity();
   yaw_des_ = wrap_angle(yaw_des_ + velocity_.z() * config_.tick_s);
@@ -285,8 +321,10 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
       -config_.height_integral_limit_m, config_.height_integral_limit_m);
   if (tick_in_segment_ == 1) collect_mpc();
   if (tick_in_segment_ == 0) {
-    // patterns change only where a cycle starts, so no foot is switched to stance mid-air
-    if (scheduler_.cycle_phase() < 1e-9) change_pattern_if_due(state);
+    // patterns change only where a cycle starts, so no foot is switched to stance mid-air; a
+    // sequence runs to its end first
+    const bool sequence_running = scheduler_.playing() && !scheduler_.sequence_finished();
+    if (scheduler_.cycle_phase() < 1e-9 && !sequence_running) change_pattern_if_due(state);
     post_mpc(state);
   }
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();

@@ -6,6 +6,7 @@
 #include <array>
 #include <cstdint>
 #include <memory>
+#include <optional>
 
 #include "control/locomotion/convex_mpc.hpp"
 #include "control/locomotion/foothold.hpp"
@@ -55,6 +56,17 @@ struct LocomotionConfig {
   int failed_solves_to_give_up = 3;
 };
 
+// what a step of a user gait adds to the target (the gait's schedule comes from play())
+struct UserStepTargets {
+  // where each swing foot lands: from the ground under its hip at touchdown, body x, y (m)
+  std::array<Eigen::Vector2d, kNumLegs> landing_offset_m{};
+  std::array<double, kNumLegs> step_height_m{};  // each leg's swing height
+  double landing_gain = 1.0;                     // scales the velocity feedback on the landing points
+  double roll_rad = 0.0;
+  double yaw_offset_rad = 0.0;  // from the yaw the commanded yaw rate integrates to
+  double friction = 0.0;        // the MPC's friction coefficient; 0: the configured one
+};
+
 struct LocomotionTarget {
   GaitPattern gait;
   Eigen::Vector3d velocity{0, 0, 0};  // vx, vy (body frame, m/s), yaw rate (rad/s); clamped to the gait
@@ -63,6 +75,7 @@ struct LocomotionTarget {
   double step_height_front_m = kDefaultStepHeightM;
   double step_height_rear_m = kDefaultStepHeightM;
   bool vertical_legs = false;
+  std::optional<UserStepTargets> user_step;  // a user gait's step; none for the table's gaits
 };
 
 struct LocomotionTelemetry {
@@ -82,6 +95,9 @@ class LocomotionController {
   // clamped to the gait's limits
   bool set_command(const LocomotionTarget& command);
   void compute(const RobotState& state, JointCommand& command);
+  // play a contact sequence once (a user gait) from the current state; the pattern of the
+  // target waits until it ends; set_command() steers the body and the swing legs meanwhile
+  void play(std::shared_ptr<const ContactSequence> sequence, const RobotState& state);
   // the position reference jumps to the trunk: the controller keeps tracking velocity but no
   // longer pulls the trunk back to where the commands alone would have taken it (a gait that lets
   // outside forces move the robot)

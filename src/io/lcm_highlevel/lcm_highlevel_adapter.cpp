@@ -6,6 +6,7 @@
 #include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_highlevel/highlevel_wire.hpp"
 #include "io/lcm_highlevel/user_gait_file.hpp"
+#include "io/lcm_highlevel/user_gait_program.hpp"
 
 namespace cerebellum {
 namespace {
@@ -37,9 +38,10 @@ std::string describe_gait_file(const UserGaitFile& file) {
 
 }  // namespace
 
-LcmHighLevelAdapter::LcmHighLevelAdapter(HighLevelMachine& machine, const HighLevelLcmConfig& config,
-                                         double loop_period_s, std::FILE* log)
+LcmHighLevelAdapter::LcmHighLevelAdapter(HighLevelMachine& machine, UserGaitSlot& user_gait_slot,
+                                         const HighLevelLcmConfig& config, double loop_period_s, std::FILE* log)
     : machine_(machine),
+      slot_(user_gait_slot),
       log_(log),
       keepalive_s_(config.response_keepalive_s),
       command_lcm_(open_lcm_url(config.command_url, kInterfaceName)),
@@ -123,13 +125,28 @@ void LcmHighLevelAdapter::on_gait_file(const lcm::ReceiveBuffer* buffer, const s
     line = "user_gait_file refused (result 1): " + std::string(to_string(decoded)) + " packet of " +
            std::to_string(buffer->data_size) + " bytes";
   } else if (const UserGaitParse parsed = parse_user_gait_file(text); !parsed.file) {
-    line = "user_gait_file refused (result 1): " + parsed.error +
-           " (user gaits not supported yet beyond storing a valid file)";
+    line = "user_gait_file refused (result 1): " + parsed.error;
+  } else if (const std::string unsafe = parsed.file->kind == UserGaitFile::Kind::Definition
+                                            ? definition_problem(parsed.file->definition)
+                                            : parameters_problem(parsed.file->parameters);
+             !unsafe.empty()) {
+    line = "user_gait_file refused (result 1): " + unsafe + "; the previous gait is kept";
   } else {
     accepted = true;
     user_gaits_.store(*parsed.file);
-    line = "user_gait_file stored (result 0), " + describe_gait_file(*parsed.file) +
-           "; running user gaits (11/110, 62/110) is not supported yet";
+    line = "user_gait_file stored (result 0), " + describe_gait_file(*parsed.file);
+    const std::optional<UserGaitDefinition> definition = user_gaits_.definition();
+    const std::optional<UserGaitParameters> parameters = user_gaits_.parameters();
+    if (definition && parameters) {
+      const std::shared_ptr<const UserGaitProgram> program = build_user_gait_program(*definition, *parameters);
+      slot_.publish(program);
+      char ready[128];
+      std::snprintf(ready, sizeof(ready), "; ready to run (11/110, 62/110): %zu sections, %zu steps, %.2f s",
+                    definition->sections.size(), parameters->steps.size(), program->duration_s());
+      line += ready;
+    } else {
+      line += definition ? "; waiting for the parameters" : "; waiting for the definition";
+    }
   }
   gait_file_log_.line(wall_seconds(), line);
   (accepted ? gait_files_accepted_ : gait_files_refused_).fetch_add(1);

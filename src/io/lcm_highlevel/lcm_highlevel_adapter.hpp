@@ -21,6 +21,7 @@
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_highlevel/response_schedule.hpp"
 #include "io/lcm_highlevel/user_gait_store.hpp"
+#include "modes/user_gait.hpp"
 #include "modes/high_level_machine.hpp"
 
 namespace lcm {
@@ -49,8 +50,9 @@ class LcmHighLevelAdapter final : public CycleObserver {
  public:
   // opens the three urls and starts the thread; throws std::runtime_error naming a url LCM cannot
   // open. log: where notes and warnings go (never written from the loop thread)
-  LcmHighLevelAdapter(HighLevelMachine& machine, const HighLevelLcmConfig& config, double loop_period_s,
-                      std::FILE* log);
+  // user_gait_slot: where a gait whose definition and parameters are both valid is handed over
+  LcmHighLevelAdapter(HighLevelMachine& machine, UserGaitSlot& user_gait_slot, const HighLevelLcmConfig& config,
+                      double loop_period_s, std::FILE* log);
   ~LcmHighLevelAdapter() override;
   LcmHighLevelAdapter(const LcmHighLevelAdapter&) = delete;
   LcmHighLevelAdapter& operator=(const LcmHighLevelAdapter&) = delete;
@@ -87,6 +89,7 @@ class LcmHighLevelAdapter final : public CycleObserver {
   LoggedCounts current_counts() const;
 
   HighLevelMachine& machine_;
+  UserGaitSlot& slot_;
   std::FILE* log_;
   double keepalive_s_;
   std::unique_ptr<lcm::LCM> command_lcm_;

@@ -46,7 +46,7 @@ class HighLevelLockstep : public ::testing::Test {
       : config_(lockstep_config(keepalive_s)),
         log_(std::tmpfile()),
         mc_(make_simulated_mc(config_)),
-        adapter_(mc_.machine(), config_.highlevel, config_.loop_period_s, log_) {
+        adapter_(mc_.machine(), mc_.user_gait_slot(), config_.highlevel, config_.loop_period_s, log_) {
     mc_.loop().add_observer(adapter_);
   }
   ~HighLevelLockstep() override { std::fclose(log_); }

@@ -1,7 +1,8 @@
 // A scan of a TOML text's shape before the parser sees it. toml++ parses dotted keys and nested
 // arrays / inline tables recursively, so a small text with a key 40,000 parts deep overflows the
 // stack of the thread that parses it (a user_gait_file packet could stop the MC). A valid gait file
-// needs a table header and one level of arrays; anything far deeper is refused here.
+// needs a table header and one level of arrays (so does a motion file); anything far deeper is
+// refused here.
 #pragma once
 
 #include <string>

@@ -1,4 +1,4 @@
-#include "io/lcm_highlevel/toml_shape.hpp"
+#include "core/toml_shape.hpp"
 
 namespace cerebellum {
 namespace {

@@ -1,0 +1,19 @@
+#include "modes/user_gait.hpp"
+
+#include <algorithm>
+
+#include "control/locomotion/gait_table.hpp"
+
+namespace cerebellum {
+
+double UserGaitProgram::sequence_s() const { return sequence ? sequence->segments() * kGaitSegmentS : 0.0; }
+
+double UserGaitProgram::steps_s() const {
+  double total = 0.0;
+  for (const UserGaitStep& step : steps) total += step.duration_s;
+  return total;
+}
+
+double UserGaitProgram::duration_s() const { return std::max(sequence_s(), steps_s()); }
+
+}  // namespace cerebellum

@@ -1,0 +1,62 @@
+#include "motions/motion_file.hpp"
+
+#include "core/toml_shape.hpp"
+#include "motions/command_step_toml.hpp"
+
+namespace cerebellum {
+
+MotionFileParse parse_motion_file(std::string_view text) {
+  MotionFileParse result;
+  if (text.size() > kMaxMotionFileBytes) {
+    result.error =
+        "is " + std::to_string(text.size()) + " bytes, more than the limit of " + std::to_string(kMaxMotionFileBytes);
+    return result;
+  }
+  // the parser recurses on dotted keys and nesting: refuse deep shapes before it sees them
+  if (std::string shape = toml_shape_problem(text); !shape.empty()) {
+    result.error = "refused before parsing: " + shape;
+    return result;
+  }
+  toml::table document;
+  try {
+    document = toml::parse(text);
+  } catch (const toml::parse_error& e) {
+    result.error = toml_parse_error_text(e);
+    return result;
+  }
+  TomlProblem problem;
+  Motion motion;
+  const std::optional<long long> id = toml_integer_in(document.get("id"), kFirstBuiltInMotionId, kLastUserMotionId);
+  if (!id) {
+    problem.set("id must be an integer in [" + std::to_string(kFirstBuiltInMotionId) + ", " +
+                std::to_string(kLastUserMotionId) + "] (" + std::to_string(kFirstUserMotionId) + ".." +
+                std::to_string(kLastUserMotionId) + " for users' motions)");
+  }
+  motion.id = static_cast<int>(id.value_or(0));
+  const std::optional<std::string_view> name = document["name"].value<std::string_view>();
+  if (!name || name->empty() || name->size() > kMaxMotionNameLength) {
+    problem.set("name must be a text of 1 to " + std::to_string(kMaxMotionNameLength) + " characters");
+  } else {
+    motion.name = std::string(*name);
+  }
+  const toml::array* steps = toml_entries(document, "step", kMaxMotionSteps, {"id", "name"}, problem);
+  if (steps != nullptr) {
+    for (std::size_t i = 0; i < steps->size(); ++i) {
+      HighLevelCommand step = read_command_step(*steps->get(i)->as_table(), i, problem);
+      if (step.duration < 1 || step.duration > kMaxMotionStepMs) {
+        problem.set(toml_where("step", i, "duration") + " must be in [1, " + std::to_string(kMaxMotionStepMs) +
+                    "] ms, found " + std::to_string(step.duration));
+      }
+      step.life_count = 0;
+      motion.steps.push_back(step);
+    }
+  }
+  if (problem.found()) {
+    result.error = problem.text();
+    return result;
+  }
+  result.motion = std::move(motion);
+  return result;
+}
+
+}  // namespace cerebellum
