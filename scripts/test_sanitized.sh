@@ -13,4 +13,4 @@ export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktra
 ctest --output-on-failure --timeout 900 -j"$(nproc)" -LE "demo|sockets|process|tools|install" 2>&1 | tee ctest.log
 status=${PIPESTATUS[0]}
 [[ $status -eq 0 ]] || exit "$status"
-"$root/scripts/fuzz.sh" "$fuzz_seconds"
+FUZZ_SEED=1 "$root/scripts/fuzz.sh" "$fuzz_seconds"

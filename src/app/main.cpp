@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "app/cmd_command.hpp"
+#include "app/gait_command.hpp"
 #include "app/log_command.hpp"
 #include "app/push_command.hpp"
 #include "app/sim_command.hpp"
@@ -18,7 +19,8 @@ constexpr const char* kUsage =
     "  status print the MC's high-level responses and odometry (cerebellum status --help)\n"
     "  log    record the interface's LCM traffic, one lcm-logger per port (cerebellum log --help)\n"
     "  replay play a recorded log back on its ports (cerebellum replay --help)\n"
-    "  push   push the simulated robot's trunk with a force (cerebellum push --help)\n";
+    "  push   push the simulated robot's trunk with a force (cerebellum push --help)\n"
+    "  gait   convert and upload self-defined gait files (cerebellum gait --help)\n";
 
 }  // namespace
 
@@ -35,7 +37,8 @@ int main(int argc, char** argv) {
   if (args[0] == "log") return cerebellum::run_log_command(rest);
   if (args[0] == "replay") return cerebellum::run_replay_command(rest);
   if (args[0] == "push") return cerebellum::run_push_command(rest);
-  std::fprintf(stderr, "cerebellum: unknown command '%s' (accepted: sim, cmd, status, log, replay, push)\n%s",
+  if (args[0] == "gait") return cerebellum::run_gait_command(rest);
+  std::fprintf(stderr, "cerebellum: unknown command '%s' (accepted: sim, cmd, status, log, replay, push, gait)\n%s",
                args[0].c_str(), kUsage);
   return 2;
 }

@@ -27,9 +27,15 @@ class SectionReader {
   SectionReader(const YAML::Node& node, std::string file, std::string section, std::set<std::string> accepted)
       : node_(node), file_(std::move(file)), section_(std::move(section)), accepted_(std::move(accepted)) {
     if (!node_.IsMap()) fail(section_, "must be a mapping of keys (accepted: " + join(accepted_) + ")");
+    std::set<std::string> seen;
     for (const auto& entry : node_) {
-      const std::string key = entry.first.as<std::string>();
+      // a key that is a list or a mapping (YAML allows it) names nothing here
+      if (!entry.first.IsScalar())
+        fail(section_, "has a key that is not a plain name (accepted: " + join(accepted_) + ")");
+      const std::string key = entry.first.Scalar();
       if (!accepted_.count(key)) fail(section_ + "." + key, "is not a known key (accepted: " + join(accepted_) + ")");
+      // YAML parsers keep the first of two equal keys: a second one is a mistake, not an override
+      if (!seen.insert(key).second) fail(section_ + "." + key, "appears twice; give each key once");
     }
   }
 
@@ -203,6 +209,7 @@ McConfig default_config() {
 }
 
 McConfig load_config(const std::string& path) {
+  if (fs::is_directory(path)) throw ConfigError("config " + path + ": is a folder; give the YAML file in it");
   if (!fs::is_regular_file(path)) throw ConfigError("config file not found: " + path);
   YAML::Node root;
   try {

@@ -82,6 +82,36 @@ TEST(McConfig, BrokenYamlAndMissingFileAreReported) {
   EXPECT_NE(load_error("- a\n- b\n").find("<top> must be a mapping"), std::string::npos);
 }
 
+TEST(McConfig, AKeyGivenTwiceIsNamedInsteadOfTheFirstWinning) {
+  EXPECT_NE(load_error("stand_up:\n  kp: 50\n  kp: 80\n").find("stand_up.kp appears twice"), std::string::npos);
+  EXPECT_NE(load_error("robot: {}\nrobot: {}\n").find("<top>.robot appears twice"), std::string::npos);
+}
+
+TEST(McConfig, AKeyThatIsAListIsRefusedWithTheAcceptedNames) {
+  // found by the config_yaml fuzz target: before, the YAML library's conversion error escaped
+  EXPECT_NE(load_error("? [2]\n: 1\n").find("<top> has a key that is not a plain name"), std::string::npos);
+  EXPECT_NE(load_error("robot:\n  ? {a: 1}\n  : 2\n").find("robot has a key that is not a plain name"),
+            std::string::npos);
+}
+
+TEST(McConfig, AFolderGivenAsTheConfigSaysSo) {
+  const std::string folder = ::testing::TempDir();
+  try {
+    load_config(folder);
+    FAIL();
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a folder; give the YAML file in it"), std::string::npos) << e.what();
+  }
+}
+
+TEST(McConfig, MotionFoldersAreResolvedAndMustExist) {
+  EXPECT_NE(load_error("motions: {user_folder: nowhere}\n").find("motions.user_folder is not a folder: "),
+            std::string::npos);
+  const McConfig shipped = load_config(std::string(CEREBELLUM_SOURCE_DIR) + "/config/cerebellum.yaml");
+  EXPECT_EQ(shipped.motions.folder, std::string(CEREBELLUM_SOURCE_DIR) + "/config/motions");
+  EXPECT_EQ(shipped.motions.user_folder, "");
+}
+
 TEST(McConfig, EmptyFileGivesDefaults) { EXPECT_EQ(load_error(""), ""); }
 
 TEST(McConfig, ShippedConfigLoads) {

@@ -17,6 +17,10 @@
 
 namespace cerebellum {
 
+// the channels of user gait files: a text in, a result out
+inline constexpr const char* kUserGaitFileChannel = "user_gait_file";
+inline constexpr const char* kUserGaitResultChannel = "user_gait_result";
+
 // one raw robot_control_cmd packet (exactly 124 bytes)
 WireDecode decode_robot_control_cmd(const void* data, std::size_t size, HighLevelCommand& command);
 // the wire message of a command (what a client sends)

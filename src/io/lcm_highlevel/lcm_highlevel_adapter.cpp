@@ -12,8 +12,6 @@ namespace cerebellum {
 namespace {
 
 constexpr const char* kCommandChannel = "robot_control_cmd";
-constexpr const char* kGaitFileChannel = "user_gait_file";
-constexpr const char* kGaitResultChannel = "user_gait_result";
 constexpr const char* kResponseChannel = "robot_control_response";
 constexpr const char* kTemperatureChannel = "motor_temperature";
 constexpr const char* kOdometryChannel = "global_to_robot";
@@ -52,7 +50,7 @@ LcmHighLevelAdapter::LcmHighLevelAdapter(HighLevelMachine& machine, UserGaitSlot
       gait_file_log_(log, kInterfaceName, "user_gait_file results", kGaitFileLinesPerSecond),
       count_log_period_(wall_seconds()) {
   command_lcm_->subscribe(kCommandChannel, &LcmHighLevelAdapter::on_command, this);
-  command_lcm_->subscribe(kGaitFileChannel, &LcmHighLevelAdapter::on_gait_file, this);
+  command_lcm_->subscribe(kUserGaitFileChannel, &LcmHighLevelAdapter::on_gait_file, this);
   std::fprintf(log_,
                "highlevel: robot_control_cmd and user_gait_file on %s; robot_control_response and "
                "motor_temperature on %s; global_to_robot on %s\n",
@@ -151,7 +149,7 @@ void LcmHighLevelAdapter::on_gait_file(const lcm::ReceiveBuffer* buffer, const s
   gait_file_log_.line(wall_seconds(), line);
   (accepted ? gait_files_accepted_ : gait_files_refused_).fetch_add(1);
   const file_recv_lcmt reply = make_file_result(accepted);
-  command_lcm_->publish(kGaitResultChannel, &reply);
+  command_lcm_->publish(kUserGaitResultChannel, &reply);
 }
 
 void LcmHighLevelAdapter::publish(const Telemetry& telemetry) {
