@@ -2,6 +2,8 @@
 
 #include <stdexcept>
 
+#include "io/lcm_highlevel/motion_gaits.hpp"
+
 namespace cerebellum {
 
 HighLevelCommand startup_command(Startup startup) {
@@ -21,6 +23,7 @@ ModeSetConfig mode_set_config(const McConfig& config) {
   modes.stand_up = config.stand_up;
   modes.locomotion_stand = config.locomotion_stand;
   modes.motions = load_motion_library(config.motions);
+  attach_user_gaits(modes.motions);
   return modes;
 }
 

@@ -36,7 +36,7 @@ ModeSet::ModeSet(const ModeSetConfig& config)
       user_gait_(walking_, user_gait_slot_),
       locomotion_(gaits_),
       motions_(config.motions),
-      motion_(motions_, {&pose_control_, &qp_stand_, &locomotion_, &recovery_stand_}, user_gait_slot_) {
+      motion_(motions_, {&pose_control_, &qp_stand_, &locomotion_, &recovery_stand_}, user_gait_slot_, user_gait_) {
   // the stepping gaits of the table run on the MPC locomotion controller; the stands on the
   // configured one
   LocomotionGait& stand =
@@ -48,7 +48,7 @@ ModeSet::ModeSet(const ModeSetConfig& config)
   gaits_.add(kUserGaitId, user_gait_);
   for (const Motion& motion : motions_.motions()) {
     for (std::size_t i = 0; i < motion.steps.size(); ++i) {
-      if (const char* reason = motion_.check_step(motion.steps[i])) {
+      if (const char* reason = motion_.check_step(motion, motion.steps[i])) {
         throw std::invalid_argument(motion.origin + ": motion " + std::to_string(motion.id) + ", step " +
                                     std::to_string(i + 1) + ": " + reason);
       }

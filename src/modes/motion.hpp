@@ -3,10 +3,12 @@
 // MotionMode runs them.
 #pragma once
 
+#include <memory>
 #include <string>
 #include <vector>
 
 #include "modes/high_level_command.hpp"
+#include "modes/user_gait.hpp"
 
 namespace cerebellum {
 
@@ -21,6 +23,11 @@ struct Motion {
   std::string name;
   std::string origin;                   // the file it was read from, for messages
   std::vector<HighLevelCommand> steps;  // each runs for its duration (ms), then the next starts
+  // a motion's own user gait (definition and parameters files, resolved paths), run by its steps
+  // of mode 11 gait 110 instead of the uploaded one; the program is attached by the MC at start
+  std::string user_gait_definition;
+  std::string user_gait_parameters;
+  std::shared_ptr<const UserGaitProgram> user_gait;
 
   // the planned length: the sum of the steps' durations
   double duration_s() const {
@@ -38,6 +45,7 @@ class MotionLibrary {
   // nullptr for an id no motion has
   const Motion* find(int id) const;
   const std::vector<Motion>& motions() const { return motions_; }
+  std::vector<Motion>& motions() { return motions_; }
   // "1 2 3 ..." for messages
   std::string id_list() const;
 

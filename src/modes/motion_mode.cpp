@@ -14,11 +14,20 @@ HighLevelCommand stand_up_step() {
   return step;
 }
 
+// a step that runs a user gait (the motion's own)
+bool runs_user_gait(const HighLevelCommand& step) {
+  return step.mode == static_cast<int>(ModeId::Locomotion) && step.gait_id == kUserGaitId;
+}
+
 }  // namespace
 
 MotionMode::MotionMode(const MotionLibrary& library, const StepModes& step_modes, const UserGaitSlot& user_gaits,
-                       const MotionModeConfig& config)
-    : library_(library), step_modes_(step_modes), user_gaits_(user_gaits), config_(config) {
+                       UserGaitRunner& user_gait_runner, const MotionModeConfig& config)
+    : library_(library),
+      step_modes_(step_modes),
+      user_gaits_(user_gaits),
+      user_gait_runner_(user_gait_runner),
+      config_(config) {
   user_gait_motion_.id = kUserGaitId;
   user_gait_motion_.name = "uploaded user gait";
   HighLevelCommand run_gait;
@@ -42,10 +51,13 @@ const char* MotionMode::check(const HighLevelCommand& command) const {
   return nullptr;
 }
 
-const char* MotionMode::check_step(const HighLevelCommand& step) const {
+const char* MotionMode::check_step(const Motion& motion, const HighLevelCommand& step) const {
   const Mode* mode = step_mode(step.mode);
   if (mode == nullptr) return "a motion step runs mode 3, 11, 12 or 21";
   if (step.duration <= 0) return "a motion step needs duration > 0 (ms)";
+  if (runs_user_gait(step)) {
+    return motion.user_gait != nullptr ? nullptr : "a step of mode 11 gait 110 needs the motion's own user_gait files";
+  }
   return mode->check(step);
 }
 
@@ -90,6 +102,8 @@ void MotionMode::start(const RobotState& state, const HighLevelCommand& command)
 
 void MotionMode::begin_step(const RobotState& state) {
   const HighLevelCommand step = plan_step(step_);
+  // the motion's own gait, or (62/110) the uploaded one
+  if (runs_user_gait(step) && motion_->user_gait != nullptr) user_gait_runner_.use_next(motion_->user_gait);
   Mode* next = step_mode(step.mode);
   if (next == nullptr) {
     running_ = false;  // load-time checks keep such steps out of the library

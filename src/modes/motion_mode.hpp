@@ -12,6 +12,7 @@
 #include "modes/mode.hpp"
 #include "modes/motion.hpp"
 #include "modes/user_gait.hpp"
+#include "modes/user_gait_runner.hpp"
 
 namespace cerebellum {
 
@@ -29,8 +30,9 @@ class MotionMode final : public Mode {
  public:
   // the modes a step may run, by mode id; the library must outlive this mode
   using StepModes = std::array<Mode*, 4>;
+  // user_gait_runner: where a motion's own user gait is handed to its 11/110 steps
   MotionMode(const MotionLibrary& library, const StepModes& step_modes, const UserGaitSlot& user_gaits,
-             const MotionModeConfig& config = {});
+             UserGaitRunner& user_gait_runner, const MotionModeConfig& config = {});
 
   ModeId id() const override { return ModeId::Motion; }
   const char* check(const HighLevelCommand& command) const override;
@@ -44,8 +46,9 @@ class MotionMode final : public Mode {
   // the queue entry of a 62 command lasts at least until the motion ends
   bool holds_entry() const override { return running_; }
 
-  // nullptr when a step may run in a motion (its mode is a step mode and accepts it), else why not
-  const char* check_step(const HighLevelCommand& step) const;
+  // nullptr when a step may run in the motion (its mode is a step mode and accepts it; an 11/110
+  // step needs the motion's own user gait), else why not
+  const char* check_step(const Motion& motion, const HighLevelCommand& step) const;
   const MotionLibrary& library() const { return library_; }
 
  private:
@@ -59,6 +62,7 @@ class MotionMode final : public Mode {
   const MotionLibrary& library_;
   StepModes step_modes_;
   const UserGaitSlot& user_gaits_;
+  UserGaitRunner& user_gait_runner_;
   Motion user_gait_motion_;  // 62/110: one step of 11/110 as long as the uploaded gait
   MotionModeConfig config_;
   const Motion* motion_ = nullptr;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "control/locomotion/gait_table.hpp"
 
@@ -29,7 +30,7 @@ const char* UserGaitRunner::check(const HighLevelCommand&) const {
 }
 
 void UserGaitRunner::start(const RobotState& state, const LocomotionCommand& command) {
-  program_ = slot_.current();
+  program_ = next_ != nullptr ? std::exchange(next_, nullptr) : slot_.current();
   LocomotionCommand stand = command;
   stand.gait_id = kStandGaitId;
   stand.velocity.setZero();

@@ -17,6 +17,7 @@ class UserGaitRunner final : public LocomotionGait {
  public:
   UserGaitRunner(WalkingGaits& walking, const UserGaitSlot& slot);
 
+  // refused while nothing is uploaded
   const char* check(const HighLevelCommand& command) const override;
   void start(const RobotState& state, const LocomotionCommand& command) override;
   void update(const LocomotionCommand&) override {}  // a running gait is not steered by clients
@@ -25,6 +26,8 @@ class UserGaitRunner final : public LocomotionGait {
   void stop() override;
   int progress_percent() const override;
 
+  // the next start() runs this program instead of the uploaded one (a motion's own gait)
+  void use_next(std::shared_ptr<const UserGaitProgram> program) { next_ = std::move(program); }
   // the gait being run (none before start)
   const UserGaitProgram* program() const { return program_.get(); }
   bool finished() const { return finished_; }
@@ -35,6 +38,7 @@ class UserGaitRunner final : public LocomotionGait {
   WalkingGaits& walking_;
   const UserGaitSlot& slot_;
   std::shared_ptr<const UserGaitProgram> program_;
+  std::shared_ptr<const UserGaitProgram> next_;
   double start_s_ = 0.0;
   double elapsed_s_ = 0.0;
   std::size_t step_ = 0;

@@ -39,7 +39,21 @@ MotionFileParse parse_motion_file(std::string_view text) {
   } else {
     motion.name = std::string(*name);
   }
-  const toml::array* steps = toml_entries(document, "step", kMaxMotionSteps, {"id", "name"}, problem);
+  if (const toml::node* gait = document.get("user_gait")) {
+    const toml::table* files = gait->as_table();
+    const std::optional<std::string_view> definition =
+        files != nullptr ? (*files)["definition"].value<std::string_view>() : std::nullopt;
+    const std::optional<std::string_view> parameters =
+        files != nullptr ? (*files)["parameters"].value<std::string_view>() : std::nullopt;
+    if (files == nullptr || files->size() != 2 || !definition || !parameters || definition->empty() ||
+        parameters->empty()) {
+      problem.set("user_gait must be { definition = \"FILE\", parameters = \"FILE\" }");
+    } else {
+      motion.user_gait_definition = std::string(*definition);
+      motion.user_gait_parameters = std::string(*parameters);
+    }
+  }
+  const toml::array* steps = toml_entries(document, "step", kMaxMotionSteps, {"id", "name", "user_gait"}, problem);
   if (steps != nullptr) {
     for (std::size_t i = 0; i < steps->size(); ++i) {
       HighLevelCommand step = read_command_step(*steps->get(i)->as_table(), i, problem);

@@ -9,6 +9,10 @@
 //   contact = 0b1110
 //   foot_pose = [0.12, 0.0, 0.12, 0.0, 0.0, 0.0]
 //   duration = 1500
+//
+// A motion may bring its own user gait, run by its steps of mode 11 gait 110:
+//   user_gait = { definition = "../user_gaits/moonwalk_def.toml", parameters = "..." }
+// (paths relative to the motion file; the parser keeps them as written).
 #pragma once
 
 #include <cstddef>

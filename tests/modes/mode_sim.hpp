@@ -17,6 +17,7 @@
 #include "estimation/body_state_estimator.hpp"
 #include "modes/high_level_machine.hpp"
 #include "modes/mode_set.hpp"
+#include "io/lcm_highlevel/motion_gaits.hpp"
 #include "motions/motion_folder.hpp"
 
 namespace cerebellum::testing {
@@ -36,6 +37,7 @@ inline ModeSetConfig mode_sim_config() {
   config.stand_up = default_stand_up_config();
   config.locomotion_stand = LocomotionStand::Qp;
   config.motions = load_motion_library({CEREBELLUM_SOURCE_DIR "/config/motions", ""});
+  attach_user_gaits(config.motions);
   return config;
 }
 

@@ -87,6 +87,22 @@ TEST(MotionFile, EachWrongFieldIsNamedWithItsStepAndWhatIsExpected) {
             std::string::npos);
 }
 
+TEST(MotionFile, AMotionMayNameItsOwnUserGaitFiles) {
+  const std::string head = "id = 82\nname = \"g\"\n";
+  const std::string step = "[[step]]\nmode = 11\ngait_id = 110\nduration = 900\n";
+  const MotionFileParse ok =
+      parse_motion_file(head + "user_gait = { definition = \"d.toml\", parameters = \"p.toml\" }\n" + step);
+  ASSERT_TRUE(ok.motion.has_value()) << ok.error;
+  EXPECT_EQ(ok.motion->user_gait_definition, "d.toml");
+  EXPECT_EQ(ok.motion->user_gait_parameters, "p.toml");
+  for (const char* wrong : {"user_gait = \"d.toml\"\n", "user_gait = { definition = \"d.toml\" }\n",
+                            "user_gait = { definition = \"d.toml\", parameters = 3 }\n"}) {
+    EXPECT_EQ(parse_motion_file(head + wrong + step).error,
+              "user_gait must be { definition = \"FILE\", parameters = \"FILE\" }")
+        << wrong;
+  }
+}
+
 TEST(MotionFile, AFileWithoutStepsIsRefused) {
   EXPECT_EQ(parse_motion_file("id = 80\nname = \"nothing\"\n").error, "no [[step]] tables");
 }

@@ -84,9 +84,19 @@ TEST_F(MotionFolder, AFolderThatIsNotThereIsNamed) {
   }
 }
 
+TEST_F(MotionFolder, UserGaitFilesAreFoundNextToTheMotionFile) {
+  std::ofstream(folder_ / "walk.toml") << "id = 84\nname = \"w\"\nuser_gait = { definition = \"gaits/d.toml\", "
+                                          "parameters = \"/abs/p.toml\" }\n[[step]]\nmode = 11\ngait_id = 110\n"
+                                          "duration = 500\n";
+  MotionLibrary library;
+  load_motion_folder(folder_.string(), kFirstUserMotionId, kLastUserMotionId, library);
+  EXPECT_EQ(library.find(84)->user_gait_definition, (folder_ / "gaits/d.toml").string());
+  EXPECT_EQ(library.find(84)->user_gait_parameters, "/abs/p.toml");
+}
+
 TEST(ShippedMotions, LoadWithTheReferencesMotionIds) {
   const MotionLibrary library = load_motion_library({CEREBELLUM_SOURCE_DIR "/config/motions", ""});
-  for (int id : {1, 2, 3, 4, 5, 6, 11, 34}) EXPECT_NE(library.find(id), nullptr) << id;
+  for (int id : {1, 2, 3, 4, 5, 6, 11, 12, 34}) EXPECT_NE(library.find(id), nullptr) << id;
 }
 
 }  // namespace

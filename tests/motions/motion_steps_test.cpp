@@ -2,6 +2,7 @@
 // of a mode a motion cannot run, or one its mode refuses, stops the start with the file and step.
 #include <gtest/gtest.h>
 
+#include <memory>
 #include <stdexcept>
 #include <string>
 
@@ -10,9 +11,10 @@
 namespace cerebellum {
 namespace {
 
-std::string build_error(const HighLevelCommand& step) {
+std::string build_error(const HighLevelCommand& step, std::shared_ptr<const UserGaitProgram> gait = nullptr) {
   ModeSetConfig config;
   Motion motion;
+  motion.user_gait = std::move(gait);
   motion.id = 88;
   motion.name = "test";
   motion.origin = "user/88.toml";
@@ -44,6 +46,15 @@ TEST(MotionSteps, AStepItsModeRefusesStopsTheStartWithTheModesReason) {
   two_legs_up.duration = 500;
   EXPECT_EQ(build_error(two_legs_up),
             "user/88.toml: motion 88, step 2: mode 21 gait 2 needs one lifted leg in contact (e.g. 0b1110)");
+}
+
+TEST(MotionSteps, AUserGaitStepNeedsTheMotionsOwnGait) {
+  HighLevelCommand gait;
+  gait.mode = 11;
+  gait.gait_id = 110;
+  gait.duration = 1000;
+  EXPECT_EQ(build_error(gait), "user/88.toml: motion 88, step 2: a step of mode 11 gait 110 needs the motion's own user_gait files");
+  EXPECT_EQ(build_error(gait, std::make_shared<const UserGaitProgram>()), "");
 }
 
 TEST(MotionSteps, AcceptedStepsBuildTheModes) {
