@@ -38,6 +38,7 @@ void PoseControlMode::enter(const RobotState& state, const HighLevelCommand& com
   support_.reset();
   trim_.reset();
   for (Eigen::Vector3d& offset : foot_offsets_) offset.setZero();
+  for (Eigen::Vector3d& offset : offsets_now_) offset.setZero();
   base_height_m_ = config_.ranges.default_height_m;
   last_time_s_ = state.time_s;
   started_ = true;
@@ -108,7 +109,11 @@ void PoseControlMode::run(const RobotState& state, JointCommand& command) {
     LegMask support = kAllLegs;
     support[l] = false;
     pose.position.head<2>() += support_.shift() * (frame_.centroid(support) - frame_.centroid(kAllLegs)).head<2>();
-    feet[l] += support_.lift() * foot_offsets_[l];
+    Eigen::Vector3d step = foot_offsets_[l] - offsets_now_[l];
+    const double max_step = config_.lifted_foot_speed_m_s * dt;
+    if (step.norm() > max_step) step *= max_step / step.norm();
+    offsets_now_[l] += step;
+    feet[l] += support_.lift() * offsets_now_[l];
     force_limit[l] = support_.in_air() ? 0.0 : support_.load() * config_.distribution.force_z_max_n;
   }
 

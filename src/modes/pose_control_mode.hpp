@@ -22,6 +22,9 @@ struct PoseControlConfig {
   PoseControlRanges ranges;
   FootOffsetRanges foot_offset;
   PoseSpeed speed{0.8, 0.12, 0.3};
+  // a lifted foot moves to a new offset at most this fast (a hand shake's up and down): a jump
+  // of the target swings the leg at the joints' torque limit
+  double lifted_foot_speed_m_s = 0.4;
   SupportSequenceConfig support;
   double kp = 80.0;
   double kd = 2.0;
@@ -54,6 +57,8 @@ class PoseControlMode final : public Mode {
   OrientationTrim trim_;
   // per leg: the offset it was last asked to lift to (kept while it is put down again)
   std::array<Eigen::Vector3d, kNumLegs> foot_offsets_{};
+  // per leg: where its offset is on the way to foot_offsets_ (rate-limited)
+  std::array<Eigen::Vector3d, kNumLegs> offsets_now_{};
   double base_height_m_ = 0.0;
   double last_time_s_ = 0.0;
   bool started_ = false;

@@ -158,6 +158,22 @@ TEST(PoseControlSim, HandShakeLiftsTheRightFrontFootWhileTheBodyStaysUp) {
   EXPECT_EQ(sim.status().contact, 0x0F);
 }
 
+TEST(PoseControlSim, ALiftedFootMovesToANewOffsetAtALimitedSpeed) {
+  ModeSim sim;
+  stand_in_pose_control(sim);
+  HighLevelCommand shake = command(ModeId::PoseControl, 2);
+  shake.contact = 0b1110;
+  shake.foot_pose = {0.1f, 0.0f, 0.15f, 0.0f, 0.0f, 0.0f};
+  sim.send(shake, 2.5);
+  const double high = sim.true_foot(0).z();
+  // 6 cm down: at 0.4 m/s the target takes 0.15 s; a jump would have the foot there in a few ticks
+  shake.foot_pose[2] = 0.09f;
+  sim.send(shake, 0.05);
+  EXPECT_LT(high - sim.true_foot(0).z(), 0.03);
+  sim.run(0.5);
+  EXPECT_NEAR(high - sim.true_foot(0).z(), 0.06, 0.01);
+}
+
 TEST(PoseControlSim, HoldStopsTheBodyWhereItIs) {
   ModeSim sim;
   stand_in_pose_control(sim);
