@@ -48,7 +48,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     loop.add_observer(reporter);
     std::optional<ShmLowLevelSource> shm;
     if (config.shm.enabled) {
-      shm.emplace(config.shm, config.safety, stdout);
+      shm.emplace(config.shm, config.safety, stderr);  // events go where every interface logs
       mc.arbiter().add_low_level_source(*shm);
       loop.add_substep_participant(*shm);
     }
