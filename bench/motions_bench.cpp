@@ -103,8 +103,9 @@ int main(int argc, char** argv) {
     }
   }
   const MotionLibrary library = load_motion_library(default_config().motions);
-  std::printf("| motion | runs | time (s) | lowest trunk (m) | largest tilt (rad) | peak torque (Nm) | "
-              "temperature rise (deg C) | falls | end height / tilt error (mm / rad) |\n");
+  std::printf(
+      "| motion | runs | time (s) | lowest trunk (m) | largest tilt (rad) | peak torque (Nm) | "
+      "temperature rise (deg C) | falls | end height / tilt error (mm / rad) |\n");
   std::printf("|---|---|---|---|---|---|---|---|---|\n");
   for (const Motion& motion : library.motions()) {
     std::vector<Figures> runs;

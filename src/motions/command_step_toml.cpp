@@ -5,6 +5,8 @@
 #include <limits>
 #include <sstream>
 
+#include "core/toml_shape.hpp"
+
 namespace cerebellum {
 namespace {
 
@@ -137,6 +139,19 @@ std::string toml_parse_error_text(const toml::parse_error& error) {
   out << "not valid TOML at line " << error.source().begin.line << ", column " << error.source().begin.column << ": "
       << error.description();
   return out.str();
+}
+
+std::optional<toml::table> parse_toml_document(std::string_view text, std::string& error) {
+  if (std::string shape = toml_shape_problem(text); !shape.empty()) {
+    error = "refused before parsing: " + shape;
+    return std::nullopt;
+  }
+  try {
+    return toml::parse(text);
+  } catch (const toml::parse_error& e) {
+    error = toml_parse_error_text(e);
+    return std::nullopt;
+  }
 }
 
 }  // namespace cerebellum

@@ -47,4 +47,8 @@ HighLevelCommand read_command_step(const toml::table& table, std::size_t index, 
 // "not valid TOML at line L, column C: ..." for a parse error
 std::string toml_parse_error_text(const toml::parse_error& error);
 
+// the document of a text, or nothing and why: shapes deep enough to overflow the parser's stack
+// are refused before it sees them (core/toml_shape.hpp), then the parser's error with its line
+std::optional<toml::table> parse_toml_document(std::string_view text, std::string& error);
+
 }  // namespace cerebellum

@@ -1,6 +1,5 @@
 #include "motions/motion_file.hpp"
 
-#include "core/toml_shape.hpp"
 #include "motions/command_step_toml.hpp"
 
 namespace cerebellum {
@@ -12,18 +11,9 @@ MotionFileParse parse_motion_file(std::string_view text) {
         "is " + std::to_string(text.size()) + " bytes, more than the limit of " + std::to_string(kMaxMotionFileBytes);
     return result;
   }
-  // the parser recurses on dotted keys and nesting: refuse deep shapes before it sees them
-  if (std::string shape = toml_shape_problem(text); !shape.empty()) {
-    result.error = "refused before parsing: " + shape;
-    return result;
-  }
-  toml::table document;
-  try {
-    document = toml::parse(text);
-  } catch (const toml::parse_error& e) {
-    result.error = toml_parse_error_text(e);
-    return result;
-  }
+  const std::optional<toml::table> parsed = parse_toml_document(text, result.error);
+  if (!parsed) return result;
+  const toml::table& document = *parsed;
   TomlProblem problem;
   Motion motion;
   const std::optional<long long> id = toml_integer_in(document.get("id"), kFirstBuiltInMotionId, kLastUserMotionId);

@@ -57,7 +57,8 @@ void load_motion_folder(const std::string& folder, int first_id, int last_id, Mo
     motion.origin = file.string();
     // the user gait's files are named relative to the motion file
     for (std::string* path : {&motion.user_gait_definition, &motion.user_gait_parameters}) {
-      if (!path->empty() && fs::path(*path).is_relative()) *path = (file.parent_path() / *path).lexically_normal().string();
+      if (!path->empty() && fs::path(*path).is_relative())
+        *path = (file.parent_path() / *path).lexically_normal().string();
     }
     if (const Motion* other = library.find(motion.id)) {
       throw MotionFileError(file.string() + ": id " + std::to_string(motion.id) + " is taken by " + other->origin);

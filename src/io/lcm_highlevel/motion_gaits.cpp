@@ -27,8 +27,8 @@ UserGaitFile parse_checked(const std::string& path, const std::string& text, Use
   const UserGaitParse parsed = parse_user_gait_file(text);
   if (!parsed.file) throw std::invalid_argument(path + ": " + parsed.error);
   if (parsed.file->kind != kind) {
-    throw std::invalid_argument(path + (kind == UserGaitFile::Kind::Definition ? ": is not a gait definition"
-                                                                               : ": is not gait parameters"));
+    throw std::invalid_argument(
+        path + (kind == UserGaitFile::Kind::Definition ? ": is not a gait definition" : ": is not gait parameters"));
   }
   const std::string problem = kind == UserGaitFile::Kind::Definition ? definition_problem(parsed.file->definition)
                                                                      : parameters_problem(parsed.file->parameters);

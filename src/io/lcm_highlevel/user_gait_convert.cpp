@@ -6,7 +6,6 @@
 #include <cmath>
 #include <sstream>
 
-#include "core/toml_shape.hpp"
 #include "io/lcm_highlevel/user_gait_file.hpp"
 #include "motions/command_step_toml.hpp"
 
@@ -74,17 +73,9 @@ UserGaitConversion convert_gait_parameters(std::string_view human_text) {
     result.error = "does not begin with '# Gait Params'";
     return result;
   }
-  if (std::string shape = toml_shape_problem(human_text); !shape.empty()) {
-    result.error = "refused before parsing: " + shape;
-    return result;
-  }
-  toml::table document;
-  try {
-    document = toml::parse(human_text);
-  } catch (const toml::parse_error& e) {
-    result.error = toml_parse_error_text(e);
-    return result;
-  }
+  const std::optional<toml::table> parsed = parse_toml_document(human_text, result.error);
+  if (!parsed) return result;
+  const toml::table& document = *parsed;
   TomlProblem problem;
   const toml::array* steps = toml_entries(document, "step", kMaxGaitEntries, {}, problem);
   std::ostringstream out;

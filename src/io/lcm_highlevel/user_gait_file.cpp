@@ -8,7 +8,6 @@
 #include <set>
 #include <sstream>
 
-#include "core/toml_shape.hpp"
 #include "motions/command_step_toml.hpp"
 
 namespace cerebellum {
@@ -79,18 +78,9 @@ UserGaitParse parse_user_gait_file(std::string_view text) {
     result.error = "does not begin with '# Gait Def' or '# Gait Params'";
     return result;
   }
-  // the parser recurses on dotted keys and nesting: refuse deep shapes before it sees them
-  if (std::string shape = toml_shape_problem(text); !shape.empty()) {
-    result.error = "refused before parsing: " + shape;
-    return result;
-  }
-  toml::table document;
-  try {
-    document = toml::parse(text);
-  } catch (const toml::parse_error& e) {
-    result.error = toml_parse_error_text(e);
-    return result;
-  }
+  const std::optional<toml::table> parsed = parse_toml_document(text, result.error);
+  if (!parsed) return result;
+  const toml::table& document = *parsed;
   TomlProblem problem;
   if (file.kind == UserGaitFile::Kind::Definition) {
     file.definition = read_definition(document, problem);
