@@ -136,7 +136,11 @@ int main(int argc, char** argv) {
   tilt.rpy_des[2] = 0.2f;  // and to the left
   tour.reach("pose: pitch 0.2, yaw 0.2 (21)", tilt, 10);
   tour.reach("pose: back to level (21)", command(21, 0), 10);
-  if (!short_tour) tour.reach("shake right hand (motion 62/2)", command(62, 2), 20);
+  if (!short_tour) {
+    tour.reach("shake right hand (motion 62/2)", command(62, 2), 20);
+    // a motion hands over to pose control or a stand (reference), not to locomotion directly
+    tour.reach("pose: level after the motion (21)", command(21, 0), 10);
+  }
 
   tour.reach("locomotion stand (11, gait 1)", command(11, 1), 10);
   for (int side = 1; side <= 4; ++side) {
