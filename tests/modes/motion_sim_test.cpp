@@ -181,6 +181,21 @@ TEST(MotionSim, ARecoveryStandInterruptsAHandShakeAndTheRobotEndsStanding) {
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) EXPECT_LT(sim.true_foot(leg).z(), 0.03) << "leg " << leg;
 }
 
+TEST(MotionSim, AClientThatVanishesMidHandShakeLeavesTheRobotDampedAndUpright) {
+  ModeSim sim;
+  sim.send(command(ModeId::RecoveryStand), 3.0);
+  sim.send(motion(2), 3.5);  // the front right foot is up
+  ASSERT_GT(sim.true_foot(0).z(), 0.06);
+  // the loop runs on, nobody sends: after 0.5 s the MC damps the joints (get-down protection)
+  for (int i = 0; i < 2000; ++i) sim.loop.tick();
+  EXPECT_EQ(sim.status().mode, 7);
+  EXPECT_EQ(sim.machine.counters().timeouts.load(), 1u);
+  // down on its belly, not on its side or back
+  EXPECT_LT(std::abs(sim.true_rpy().x()), 0.5);
+  EXPECT_LT(std::abs(sim.true_rpy().y()), 0.5);
+  EXPECT_LT(sim.true_height(), 0.15);
+}
+
 TEST(MotionSim, AMotionFromOffStandsUpFirst) {
   ModeSim sim(ModeId::Off);
   sim.run(1.0);
