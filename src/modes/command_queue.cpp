@@ -2,6 +2,8 @@
 
 #include <cmath>
 
+#include "modes/transition_table.hpp"
+
 namespace cerebellum {
 namespace {
 
@@ -33,6 +35,14 @@ HighLevelCommand hold_command_after(const HighLevelCommand& last) {
   } else {
     hold.mode = static_cast<int>(ModeId::PoseControl);
     hold.gait_id = 3;
+  }
+  // the reference's pose hold may not follow every mode (7 -> 21 is BAN_TRANS): such a mode
+  // holds itself instead of reporting a refusal of a command nobody sent
+  if (is_known_mode(last.mode) && is_known_mode(hold.mode) &&
+      !transition_allowed(static_cast<ModeId>(last.mode), static_cast<ModeId>(hold.mode))) {
+    hold = last;
+    hold.duration = 0;
+    hold.vel_des = {};
   }
   return hold;
 }

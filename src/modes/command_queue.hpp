@@ -68,7 +68,9 @@ class CommandQueue {
   std::uint64_t generation_ = 0;
 };
 
-// the command that holds the robot after a timed entry of `last` ran out
+// the command that holds the robot after a timed entry of `last` ran out: the reference's (3 ->
+// 3/1, 11 -> 11/1 or 11/31, anything else -> 21/3), or `last` itself, endless, where that hold
+// may not follow it (PureDamper)
 HighLevelCommand hold_command_after(const HighLevelCommand& last);
 
 }  // namespace cerebellum

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# The seed's customized-gait example (section 2.4.3 of shared/seeds/000_*.txt), taken from the
+# seed at test time and run unmodified against the MC (with_sim.sh runs it) with our moonwalk
+# (config/user_gaits, human-form parameters that the example converts itself) and a sequence file
+# of ours, while `cerebellum status` records the responses: both files stored, the gait run as
+# motion 62/110 to its end, then the lie-down.
+#   seed_user_gait.sh <cerebellum> <work dir> <seeds dir> <python3> <generated python types dir> <source dir>
+set -u
+cerebellum=$1
+work=$2
+seeds=$3
+python=$4
+types=$5
+source_dir=$6
+source "$(dirname "$0")/../../seed_support.sh"
+seed=$(seed_file "$seeds") || exit $?
+run="$work/run"
+rm -rf "$run" && mkdir -p "$run"
+example="$work/seed_user_gait.py"
+extract_code_block "$seed" '^#### 2\.4\.3' '^```python' "$example" "Gait_Params_moonwalk.toml"
+cp "$source_dir/config/user_gaits/moonwalk_def.toml" "$run/Gait_Def_moonwalk.toml"
+cp "$source_dir/config/user_gaits/moonwalk_params.toml" "$run/Gait_Params_moonwalk.toml"
+cp "$(dirname "$0")/seed_user_gait/Usergait_List.toml" "$run/Usergait_List.toml"
+"$cerebellum" status --rate 50 --count 100000 --timeout 10 > "$work/status.log" 2>&1 &
+status=$!
+(cd "$run" && PYTHONPATH="$types" timeout 60 "$python" "$example")
+result=$?
+sleep 1
+kill -INT "$status" 2>/dev/null
+wait "$status" 2>/dev/null
+echo "example exit status: $result"
+[[ $result -eq 0 ]] || exit 1
+cut -d' ' -f1-9 "$work/status.log" | grep '^mode' | uniq > "$work/steps.log"
+grep -v 'switch 1 (TRANS' "$work/steps.log"
+fail=0
+expect() {  # expect <description> <regex>: a response line matching regex, after the previous one
+  local line
+  line=$(tail -n +"$from" "$work/steps.log" | grep -n -m1 -E "$2" | cut -d: -f1)
+  if [[ -z "$line" ]]; then
+    echo "MISSING: $1 (/$2/ after line $from)"; fail=1; return
+  fi
+  from=$((from + line - 1))
+  echo "seen: $1"
+}
+from=1
+expect "the uploaded gait runs as a motion (62/110)" '^mode 62 gait 110 bar [1-9][0-9]? switch 1 '
+expect "it nearly ends (62/110, bar >= 95)" '^mode 62 gait 110 bar 9[5-9] '
+expect "then the lie-down (7/1)" '^mode 7 gait 1 '
+exit "$fail"
