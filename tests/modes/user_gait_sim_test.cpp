@@ -191,6 +191,69 @@ TEST(UserGaitSim, ATwoBeatTrotDefinedAsAUserGaitTrotsAtItsVelocity) {
   EXPECT_TRUE(run.ended_standing);
 }
 
+// a moonwalk in the seed's format (sections 2.2.1, 2.2.2) with other numbers than ours
+struct Moonwalk {
+  std::array<int, 8> n;  // N1..N8, units of 30 ms
+  int cycles;
+  double vx, lx, ly, h_max, h_min;
+};
+
+Gait moonwalk(const Moonwalk& m) {
+  const std::array<std::array<int, 4>, 8> contacts{{{1, 1, 1, 1}, {0, 0, 0, 0}, {0, 1, 1, 0}, {0, 0, 0, 0},
+                                                    {1, 1, 1, 1}, {0, 0, 0, 0}, {1, 0, 0, 1}, {0, 0, 0, 0}}};
+  std::string definition = "# Gait Def\n";
+  auto section = [&](const std::array<int, 4>& c, int n) {
+    definition += "[[section]]\ncontact = [" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " +
+                  std::to_string(c[2]) + ", " + std::to_string(c[3]) + "]\nduration = " + std::to_string(n) + "\n";
+  };
+  for (int c = 0; c < m.cycles; ++c) {
+    for (std::size_t k = 0; k < 8; ++k) section(contacts[k], m.n[k]);
+  }
+  section({1, 1, 1, 1}, m.n[0]);
+  const auto num = [](double v) { return std::to_string(v); };
+  // per block: landing x of FR, FL, RR, RL (times lx), swing heights high on FR/RL first
+  const std::array<std::array<double, 4>, 4> landing{{{1, 0, 0, 1}, {1, -1, -1, 1}, {0, 1, 1, 0}, {-1, 1, 1, -1}}};
+  std::string parameters = "# Gait Params\n";
+  for (int c = 0; c < m.cycles; ++c) {
+    for (std::size_t b = 0; b < 4; ++b) {
+      const bool fr_high = b < 2;
+      std::string land;
+      for (std::size_t leg = 0; leg < 4; ++leg) {
+        land += (leg ? ", " : "") + num(landing[b][leg] * m.lx) + ", " + num(m.ly) + ", 0";
+      }
+      const double a = fr_high ? m.h_max : m.h_min;
+      const double o = fr_high ? m.h_min : m.h_max;
+      parameters += "[[step]]\ntype = \"usergait\"\nbody_vel_des = [" + num(m.vx) +
+                    ", 0, 0]\nbody_pos_des = [0, 0, 0, 0, 0, 0]\nlanding_pos_des = [" + land + "]\nstep_height = [" +
+                    num(a) + ", " + num(o) + ", " + num(o) + ", " + num(a) +
+                    "]\nweight = [1, 1, 1, 1, 1, 1]\nuse_mpc_traj = 1\nmu = 0.5\nlanding_gain = 1.5\ngait_id = 110\n"
+                    "duration = " +
+                    std::to_string(30 * (m.n[2 * b] + m.n[2 * b + 1])) + "\n";
+    }
+  }
+  return load(definition, parameters);
+}
+
+class MoonwalkVariant : public ::testing::TestWithParam<Moonwalk> {};
+
+TEST_P(MoonwalkVariant, RunsOnItsContactPatternStaysUpAndEndsStanding) {
+  const GaitRun run = run_gait(moonwalk(GetParam()), false);
+  EXPECT_GT(run.sections_checked, 10);
+  EXPECT_EQ(run.contact_mismatches, 0);
+  EXPECT_GT(run.lowest_height_m, 0.17);
+  EXPECT_LT(run.largest_tilt_rad, 0.3);
+  EXPECT_TRUE(run.ended_standing);
+}
+
+// quicker and shorter; slower with longer strides and higher steps; feet landing 3 cm outwards;
+// standing still (vx 0)
+INSTANTIATE_TEST_SUITE_P(
+    OtherNumbers, MoonwalkVariant,
+    ::testing::Values(Moonwalk{{3, 1, 4, 1, 3, 1, 4, 1}, 10, -0.08, 0.03, 0.0, 0.04, 0.005},
+                      Moonwalk{{6, 1, 8, 1, 6, 1, 8, 1}, 5, -0.04, 0.07, 0.0, 0.06, 0.015},
+                      Moonwalk{{4, 1, 6, 1, 4, 1, 6, 1}, 6, -0.06, 0.05, 0.03, 0.05, 0.01},
+                      Moonwalk{{4, 2, 5, 2, 4, 2, 5, 2}, 6, 0.0, 0.04, 0.0, 0.05, 0.01}));
+
 TEST(UserGaitSim, WithoutAnUploadedGaitGait110IsRefused) {
   ModeSim sim;
   sim.send(command(ModeId::RecoveryStand), 3.0);
