@@ -20,11 +20,13 @@
 #ifndef CEREBELLUM_SDK_LOWLEVEL_H
 #define CEREBELLUM_SDK_LOWLEVEL_H
 
+#include <errno.h>
 #include <fcntl.h>
 #include <stddef.h>
 #include <stdint.h>
 #include <stdio.h>
 #include <stdlib.h>
+#include <string.h>
 #include <sys/mman.h>
 #include <sys/stat.h>
 #include <unistd.h>
@@ -114,11 +116,16 @@ typedef struct __attribute__((packed)) nav_imu_def {
   float q[4];       /* w, x, y, z; body to world, rotation order zyx */
 } nav_imu_t, *nav_imu_p;
 
-/* opens (creating if absent) and maps a shared-memory object; exits the program on failure */
+/* opens (creating if absent) and maps a shared-memory object; exits the program on failure,
+   saying why (the vendor's header exits with perror alone) */
 static inline void* lowlevel_map_shm(const char* name, size_t size) {
   int fd = shm_open(name, O_CREAT | O_RDWR, 0666);
   if (fd < 0) {
-    perror("shm_open");
+    int error = errno;
+    fprintf(stderr, "lowlevel.h: cannot open the shared memory %s: %s%s\n", name, strerror(error),
+            error == EACCES ? " (the MC creates it for its own user and group: run this program as that user or in "
+                              "that group; cerebellum's shm.mode and shm.group say which)"
+                            : "");
     exit(1);
   }
   if (ftruncate(fd, (off_t)size) != 0) {

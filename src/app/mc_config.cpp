@@ -148,6 +148,12 @@ void read_shm(const SectionReader& section, ShmLowLevelConfig& shm) {
   section.text("name_prefix", shm.name_prefix);
   const std::string prefix_problem = shm_name_prefix_problem(shm.name_prefix);
   if (!prefix_problem.empty()) section.fail("shm.name_prefix", prefix_problem);
+  std::string group;
+  section.text("group", group);
+  if (!group.empty()) {
+    shm.group_id = find_group_id(group);
+    if (!shm.group_id) section.fail("shm.group", "is not a group of this system: '" + group + "'");
+  }
   std::string mode;
   section.text("mode", mode);
   if (mode.empty()) return;
@@ -260,7 +266,7 @@ McConfig load_config(const std::string& path) {
     s.number("damping_kd", config.safety.damping_kd, 0.0, 10.0);
   }
   if (root["shm"]) {
-    read_shm(SectionReader(root["shm"], path, "shm", {"enabled", "name_prefix", "mode"}), config.shm);
+    read_shm(SectionReader(root["shm"], path, "shm", {"enabled", "name_prefix", "mode", "group"}), config.shm);
   }
   if (root["motor_sdk"]) {
     read_motor_sdk(SectionReader(root["motor_sdk"], path, "motor_sdk",

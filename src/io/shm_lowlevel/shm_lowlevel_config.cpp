@@ -1,5 +1,9 @@
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
 
+#include <grp.h>
+
+#include <array>
+
 namespace cerebellum {
 
 std::string shm_spline_object_name(const std::string& name_prefix) { return "/" + name_prefix + "spline_shm"; }
@@ -26,6 +30,22 @@ std::optional<unsigned> parse_shm_mode(const std::string& text) {
   constexpr unsigned kOwnerReadWrite = 0600;
   if (mode > 0777 || (mode & kOwnerReadWrite) != kOwnerReadWrite) return std::nullopt;
   return mode;
+}
+
+std::optional<unsigned> find_group_id(const std::string& group) {
+  if (group.empty()) return std::nullopt;
+  struct group entry {};
+  struct group* found = nullptr;
+  std::array<char, 4096> buffer{};
+  if (group.find_first_not_of("0123456789") == std::string::npos && group.size() <= 9) {
+    const auto id = static_cast<gid_t>(std::stoul(group));
+    if (::getgrgid_r(id, &entry, buffer.data(), buffer.size(), &found) == 0 && found != nullptr) return id;
+    return std::nullopt;
+  }
+  if (::getgrnam_r(group.c_str(), &entry, buffer.data(), buffer.size(), &found) == 0 && found != nullptr) {
+    return found->gr_gid;
+  }
+  return std::nullopt;
 }
 
 }  // namespace cerebellum

@@ -13,6 +13,9 @@ struct ShmLowLevelConfig {
   std::string name_prefix;
   // permission bits of both objects: the MC's user and group by default, never umask-reduced
   unsigned mode = 0660;
+  // owner group of both objects (with mode 0660: the users who may write commands); none: the
+  // MC's own group
+  std::optional<unsigned> group_id;
   // 1 ms cycles without a new command frame before the command is dropped for damping
   int command_timeout_cycles = 10;
 };
@@ -24,5 +27,7 @@ std::string shm_imu_object_name(const std::string& name_prefix);
 std::string shm_name_prefix_problem(const std::string& name_prefix);
 // "0660" or "660": octal permission bits in [0, 0777] that include owner read and write
 std::optional<unsigned> parse_shm_mode(const std::string& text);
+// the id of a group given by name or number, when this system knows it
+std::optional<unsigned> find_group_id(const std::string& group);
 
 }  // namespace cerebellum

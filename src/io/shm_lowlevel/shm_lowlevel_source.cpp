@@ -32,8 +32,8 @@ ShmLowLevelSource::ShmLowLevelSource(const ShmLowLevelConfig& config, const Guar
     : config_(checked(config)),
       command_limits_(limits.command),
       damping_kd_(limits.damping_kd),
-      spline_(shm_spline_object_name(config.name_prefix), LOWLEVEL_SPLINE_SHM_SIZE, config.mode),
-      imu_(shm_imu_object_name(config.name_prefix), LOWLEVEL_IMU_SHM_SIZE, config.mode),
+      spline_(shm_spline_object_name(config.name_prefix), LOWLEVEL_SPLINE_SHM_SIZE, config.mode, config.group_id),
+      imu_(shm_imu_object_name(config.name_prefix), LOWLEVEL_IMU_SHM_SIZE, config.mode, config.group_id),
       log_(log),
       log_file_(log) {
   active_ = damping_command(damping_kd_);

@@ -38,7 +38,7 @@ class FdGuard {
 
 }  // namespace
 
-ShmRegion::ShmRegion(std::string name, std::size_t size_bytes, unsigned mode)
+ShmRegion::ShmRegion(std::string name, std::size_t size_bytes, unsigned mode, std::optional<unsigned> group_id)
     : name_(std::move(name)), size_bytes_(size_bytes) {
   const int fd = ::shm_open(name_.c_str(), O_CREAT | O_RDWR, static_cast<mode_t>(mode));
   if (fd < 0) fail(name_, "shm_open", errno);
@@ -65,6 +65,7 @@ ShmRegion::ShmRegion(std::string name, std::size_t size_bytes, unsigned mode)
     fail(name_, call, error);
   };
   if (::fchmod(fd, static_cast<mode_t>(mode)) != 0) fail_and_unlink("fchmod");
+  if (group_id && ::fchown(fd, static_cast<uid_t>(-1), static_cast<gid_t>(*group_id)) != 0) fail_and_unlink("fchown");
   if (::ftruncate(fd, static_cast<off_t>(size_bytes_)) != 0) fail_and_unlink("ftruncate");
   void* mapped = ::mmap(nullptr, size_bytes_, PROT_READ | PROT_WRITE, MAP_SHARED, fd, 0);
   if (mapped == MAP_FAILED) fail_and_unlink("mmap");

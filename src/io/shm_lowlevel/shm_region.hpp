@@ -3,6 +3,8 @@
 // MC on the same name; unlinked on destruction.
 #pragma once
 
+#include <optional>
+
 #include <cstddef>
 #include <string>
 
@@ -12,7 +14,8 @@ class ShmRegion {
  public:
   // name: "/something"; mode: permission bits, set exactly (the umask does not reduce them).
   // throws std::runtime_error naming the object and the failing call
-  ShmRegion(std::string name, std::size_t size_bytes, unsigned mode);
+  // group_id: the object's owner group (none: the process's)
+  ShmRegion(std::string name, std::size_t size_bytes, unsigned mode, std::optional<unsigned> group_id = std::nullopt);
   ~ShmRegion();
   ShmRegion(const ShmRegion&) = delete;
   ShmRegion& operator=(const ShmRegion&) = delete;

@@ -79,6 +79,21 @@ TEST_F(ShmConfigFile, BadValuesNameTheKey) {
   expect_error(write("shm:\n  name_prefix: a/b\n"), "shm.name_prefix contains '/'");
   expect_error(write("shm:\n  enabled: maybe\n"), "shm.enabled must be true or false");
   expect_error(write("shm:\n  size: 10240\n"), "shm.size is not a known key");
+  expect_error(write("shm:\n  group: no_such_group_here\n"),
+               "shm.group is not a group of this system: 'no_such_group_here'");
+}
+
+TEST(ShmConfig, GroupsAreFoundByNameOrNumber) {
+  EXPECT_EQ(find_group_id("root"), 0u);
+  EXPECT_EQ(find_group_id("0"), 0u);
+  EXPECT_EQ(find_group_id("no_such_group_here"), std::nullopt);
+  EXPECT_EQ(find_group_id(""), std::nullopt);
+  EXPECT_EQ(find_group_id("4294967"), std::nullopt);  // a number no group has
+}
+
+TEST_F(ShmConfigFile, TheGroupWhoMayWriteIsRead) {
+  EXPECT_EQ(load_config(write("shm:\n  group: root\n")).shm.group_id, 0u);
+  EXPECT_EQ(load_config(write("shm:\n  mode: 0660\n")).shm.group_id, std::nullopt);
 }
 
 }  // namespace

@@ -11,6 +11,7 @@
 #include <cstring>
 #include <stdexcept>
 
+#include "io/shm_lowlevel/shm_lowlevel_config.hpp"
 #include "io/shm_lowlevel/shm_test_names.hpp"
 
 namespace cerebellum {
@@ -93,6 +94,18 @@ TEST(ShmRegion, SecondOwnerOfALiveObjectIsRefused) {
   // the first owner's object is untouched
   EXPECT_TRUE(shm_object_exists(name));
   EXPECT_EQ(static_cast<unsigned char*>(first.data())[7], 42);
+}
+
+TEST(ShmRegion, TheConfiguredGroupOwnsTheObject) {
+  if (::geteuid() != 0) GTEST_SKIP() << "needs root to give an object to another group";
+  const std::optional<unsigned> daemon = find_group_id("daemon");
+  ASSERT_TRUE(daemon.has_value());
+  const std::string name = "/" + unique_shm_prefix() + "group";
+  ShmRegion region(name, 1024, 0660, daemon);
+  struct stat info {};
+  ASSERT_EQ(::stat(("/dev/shm" + name).c_str(), &info), 0);
+  EXPECT_EQ(info.st_gid, *daemon);
+  EXPECT_EQ(info.st_mode & 0777, 0660u);
 }
 
 TEST(ShmRegion, BadNameIsReported) { EXPECT_THROW(ShmRegion("/no/slashes/inside", 1024, 0660), std::runtime_error); }
