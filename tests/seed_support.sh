@@ -56,3 +56,16 @@ start_truth_watch() {
 truth_value() {
   sed -n "s/^$2=//p" "$1"
 }
+
+# expect <description> <regex>: a line of $steps_log (the distinct responses, in order) matching
+# regex at or after line $from; moves $from there and prints "seen", or prints MISSING and sets
+# fail=1
+expect() {
+  local line
+  line=$(tail -n +"$from" "$steps_log" | grep -n -m1 -E "$2" | cut -d: -f1)
+  if [[ -z "$line" ]]; then
+    echo "MISSING: $1 (/$2/ after line $from)"; fail=1; return
+  fi
+  from=$((from + line - 1))
+  echo "seen: $1"
+}

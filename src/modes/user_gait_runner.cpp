@@ -39,6 +39,7 @@ void UserGaitRunner::start(const RobotState& state, const LocomotionCommand& com
   elapsed_s_ = 0.0;
   finished_ = program_ == nullptr;
   if (finished_) return;
+  total_s_ = program_->duration_s();
   walking_.play(program_->sequence, state);
   step_ = 0;
   step_end_s_ = program_->steps.empty() ? 0.0 : program_->steps.front().duration_s;
@@ -73,7 +74,7 @@ void UserGaitRunner::run(const RobotState& state, JointCommand& command) {
       if (step_ < program_->steps.size()) step_end_s_ += program_->steps[step_].duration_s;
       steer_to_step(step_);
     }
-    if (elapsed_s_ >= program_->duration_s() - 1e-9) {
+    if (elapsed_s_ >= total_s_ - 1e-9) {
       // done: the stand gait on the same controller, where the robot is
       finished_ = true;
       LocomotionTarget stand;
@@ -89,9 +90,8 @@ void UserGaitRunner::stop() { walking_.stop(); }
 
 int UserGaitRunner::progress_percent() const {
   if (finished_ || program_ == nullptr) return 100;
-  const double total = program_->duration_s();
-  if (total <= 0.0) return 100;
-  return std::clamp(static_cast<int>(std::floor(100.0 * elapsed_s_ / total)), 0, 99);
+  if (total_s_ <= 0.0) return 100;
+  return std::clamp(static_cast<int>(std::floor(100.0 * elapsed_s_ / total_s_)), 0, 99);
 }
 
 }  // namespace cerebellum

@@ -40,6 +40,7 @@ class UserGaitRunner final : public LocomotionGait {
   std::shared_ptr<const UserGaitProgram> program_;
   std::shared_ptr<const UserGaitProgram> next_;
   double start_s_ = 0.0;
+  double total_s_ = 0.0;  // the program's length, summed once at the start, not every tick
   double elapsed_s_ = 0.0;
   std::size_t step_ = 0;
   double step_end_s_ = 0.0;

@@ -62,8 +62,6 @@ class GaitScheduler {
   bool playing() const { return sequence_ != nullptr; }
   // the played sequence has reached its end (every leg stands from here on)
   bool sequence_finished() const { return sequence_ != nullptr && segment_ >= sequence_->segments(); }
-  // seconds since the sequence started
-  double sequence_time_s() const { return segment_ * segment_s_ + time_in_segment_s_; }
 
   void advance(double dt_s);
   LegPhase leg_phase(std::size_t leg) const;

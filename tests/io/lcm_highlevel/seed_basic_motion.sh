@@ -29,15 +29,7 @@ echo "example exit status: $result"
 cut -d' ' -f1-9 "$work/status.log" | grep '^mode' | uniq > "$work/steps.log"
 cat "$work/steps.log"
 fail=0
-expect() {  # expect <description> <regex>: a response line matching regex, after the previous one
-  local line
-  line=$(tail -n +"$from" "$work/steps.log" | grep -n -m1 -E "$2" | cut -d: -f1)
-  if [[ -z "$line" ]]; then
-    echo "MISSING: $1 (/$2/ after line $from)"; fail=1; return
-  fi
-  from=$((from + line - 1))
-  echo "seen: $1"
-}
+steps_log="$work/steps.log"
 from=1
 # responses are sampled at 50 Hz: the example moves on at bar >= 95, the recorder may see 90-94 last
 expect "stand up nearly done (12; the example waits for bar >= 95)" '^mode 12 gait 0 bar (9[0-9]|100) '

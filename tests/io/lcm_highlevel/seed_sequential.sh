@@ -38,15 +38,7 @@ cat "$work/example.log"
 cut -d' ' -f1-11 "$work/status.log" | grep '^mode' | uniq > "$work/steps.log"
 grep -v 'switch 1 (TRANS' "$work/steps.log"
 fail=0
-expect() {  # expect <description> <regex>: a response line matching regex, after the previous one
-  local line
-  line=$(tail -n +"$from" "$work/steps.log" | grep -n -m1 -E "$2" | cut -d: -f1)
-  if [[ -z "$line" ]]; then
-    echo "MISSING: $1 (/$2/ after line $from)"; fail=1; return
-  fi
-  from=$((from + line - 1))
-  echo "seen: $1"
-}
+steps_log="$work/steps.log"
 from=1
 expect "stand up (12)" '^mode 12 gait 0 bar 100 '
 expect "body height (21/5)" '^mode 21 gait 5 '

@@ -33,15 +33,7 @@ echo "example exit status: $result"
 cut -d' ' -f1-9 "$work/status.log" | grep '^mode' | uniq > "$work/steps.log"
 grep -v 'switch 1 (TRANS' "$work/steps.log"
 fail=0
-expect() {  # expect <description> <regex>: a response line matching regex, after the previous one
-  local line
-  line=$(tail -n +"$from" "$work/steps.log" | grep -n -m1 -E "$2" | cut -d: -f1)
-  if [[ -z "$line" ]]; then
-    echo "MISSING: $1 (/$2/ after line $from)"; fail=1; return
-  fi
-  from=$((from + line - 1))
-  echo "seen: $1"
-}
+steps_log="$work/steps.log"
 from=1
 expect "the uploaded gait runs as a motion (62/110)" '^mode 62 gait 110 bar [1-9][0-9]? switch 1 '
 expect "it nearly ends (62/110, bar >= 95)" '^mode 62 gait 110 bar 9[5-9] '
