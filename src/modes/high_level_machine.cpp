@@ -257,6 +257,7 @@ void HighLevelMachine::update_status(const RobotState& state) {
   status_.footpos_error = foot_position_error_;
   status_.switch_status = orientation_error_                 ? SwitchStatus::EmergencyStop
                           : foot_position_error_ != 0        ? SwitchStatus::HighDamping
+                          : current_->damping_protection()   ? SwitchStatus::HighDamping
                           : banned_                          ? SwitchStatus::BanTransition
                           : current_->id() == ModeId::Lifted ? SwitchStatus::Lifted
                           : status_.order_process_bar < 100  ? SwitchStatus::Transitioning

@@ -41,6 +41,8 @@ class LocomotionGait {
   virtual ContactPlan contact_plan() const { return std::nullopt; }
   // another gait or mode takes over the robot
   virtual void stop() {}
+  // true while the gait has given up and damps the joints (its controller failed)
+  virtual bool damping_protection() const { return false; }
   // order_process_bar while this gait runs
   virtual int progress_percent() const = 0;
 };

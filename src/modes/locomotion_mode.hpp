@@ -22,6 +22,7 @@ class LocomotionMode final : public Mode {
   ContactPlan contact_plan() const override;
   int gait_id() const override { return gait_id_; }
   int progress_percent() const override;
+  bool damping_protection() const override { return running_ != nullptr && running_->damping_protection(); }
 
   // the command as the gait sees it: clamped to the interface's ranges
   LocomotionCommand clamped(const HighLevelCommand& command) const;

@@ -30,6 +30,9 @@ class Mode {
   // true while the command queue must keep the mode's entry running past its duration (a motion
   // runs to its end); the entry's time still counts meanwhile
   virtual bool holds_entry() const { return false; }
+  // true while the mode has given up its task and damps the joints so that the robot sinks down
+  // (a walking gait whose MPC keeps failing): switch_status 3, EDAMP
+  virtual bool damping_protection() const { return false; }
 };
 
 }  // namespace cerebellum

@@ -45,6 +45,8 @@ class MotionMode final : public Mode {
   int progress_percent() const override;
   // the queue entry of a 62 command lasts at least until the motion ends
   bool holds_entry() const override { return running_; }
+  // a step's mode that damps (its walking gave up) makes the motion report it
+  bool damping_protection() const override { return inner_ != nullptr && inner_->damping_protection(); }
 
   // nullptr when a step may run in the motion (its mode is a step mode and accepts it; an 11/110
   // step needs the motion's own user gait), else why not

@@ -21,6 +21,7 @@ class PassiveTrotGait final : public LocomotionGait {
   ContactPlan contact_plan() const override { return walking_.contact_plan(); }
   void stop() override;
   int progress_percent() const override { return 100; }
+  bool damping_protection() const override { return walking_.failed(); }
 
   const PassiveFollow& follow() const { return follow_; }
 

@@ -25,6 +25,7 @@ class UserGaitRunner final : public LocomotionGait {
   ContactPlan contact_plan() const override { return walking_.contact_plan(); }
   void stop() override;
   int progress_percent() const override;
+  bool damping_protection() const override { return walking_.failed(); }
 
   // the next start() runs this program instead of the uploaded one (a motion's own gait)
   void use_next(std::shared_ptr<const UserGaitProgram> program) { next_ = std::move(program); }

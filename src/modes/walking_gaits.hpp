@@ -34,6 +34,7 @@ class WalkingGaits final : public LocomotionGait {
 
   // the MPC failed several times in a row: the robot is being damped down
   bool failed() const { return !controller_.healthy(); }
+  bool damping_protection() const override { return failed(); }
   const LocomotionController& controller() const { return controller_; }
   void anchor_position_at_trunk(const RobotState& state) { controller_.anchor_position_at_trunk(state); }
   // a user gait drives the controller directly: its schedule once, then its own targets

@@ -24,8 +24,10 @@ class ScriptedMode final : public Mode {
   ContactPlan contact_plan() const override { return plan; }
   int gait_id() const override { return gait_; }
   int progress_percent() const override { return progress; }
+  bool damping_protection() const override { return damping; }
 
   ContactPlan plan;
+  bool damping = false;
   int progress = 100;
   int entered = 0;
   int updated = 0;
@@ -97,6 +99,19 @@ TEST(HighLevelMachine, LegalSwitchRunsTheNewModeAndReportsIt) {
   EXPECT_EQ(m.machine.status().order_process_bar, 40);
   EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::Transitioning);
   m.recovery.progress = 100;
+  m.tick();
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::Done);
+}
+
+TEST(HighLevelMachine, AModeThatGaveUpAndDampsIsReportedAsHighDampingUntilItRecovers) {
+  Machine m(ModeId::Locomotion);
+  m.tick();
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::Done);
+  m.loco.damping = true;
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, 11);
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::HighDamping);
+  m.loco.damping = false;
   m.tick();
   EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::Done);
 }

@@ -1,6 +1,8 @@
 // Locomotion end to end in lockstep simulation, on the robot's own state estimate.
 #include <gtest/gtest.h>
 
+#include "control/qp/failing_solver.hpp"
+
 #include <cmath>
 #include <utility>
 #include <vector>
@@ -186,18 +188,8 @@ TEST(Walking, PronksSidewaysWithoutRollingOver) {
   EXPECT_GT(sim.backend.ground_truth().velocity_world[1], 0.05);
 }
 
-// a solver that always fails, to prove the controller notices
-class FailingSolver final : public qp::QpSolver {
- public:
-  qp::QpStatus solve(const qp::QpProblem&, qp::QpSolution& solution) override {
-    solution.status = qp::QpStatus::Infeasible;
-    return solution.status;
-  }
-  std::string_view name() const override { return "failing"; }
-};
-
 TEST(Walking, RepeatedSolverFailureMakesTheControllerUnhealthy) {
-  WalkingSim sim(std::make_unique<FailingSolver>());
+  WalkingSim sim(std::make_unique<testing::FailingSolver>());
   sim.controller.set(walk_command(3, 0.0));
   sim.run_until(kStart + 0.05);
   EXPECT_TRUE(sim.controller.walker().healthy());
