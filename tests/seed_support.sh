@@ -69,3 +69,22 @@ expect() {
   from=$((from + line - 1))
   echo "seen: $1"
 }
+
+# start_status_recorder <cerebellum> <log file>: `cerebellum status` records the responses at
+# 50 Hz in the background; sets status_pid
+start_status_recorder() {
+  "$1" status --rate 50 --count 100000 --timeout 10 > "$2" 2>&1 &
+  status_pid=$!
+}
+
+# stop_status_recorder: stops the recorder (as Ctrl-C does) and waits for it
+stop_status_recorder() {
+  kill -INT "$status_pid" 2>/dev/null
+  wait "$status_pid" 2>/dev/null
+}
+
+# distinct_steps <status log> <last field> <steps log>: the recorder's response lines cut to fields
+# 1..last, repeats merged, in order
+distinct_steps() {
+  cut -d' ' -f1-"$2" "$1" | grep '^mode' | uniq > "$3"
+}

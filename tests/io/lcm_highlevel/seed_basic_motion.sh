@@ -16,17 +16,15 @@ source "$(dirname "$0")/../../seed_support.sh"
 seed=$(seed_file "$seeds") || exit $?
 example="$work/seed_basic_motion.py"
 extract_code_block "$seed" '^#### 2\.4\.1' '^```python' "$example" "robot_control_cmd"
-"$cerebellum" status --rate 50 --count 100000 --timeout 10 > "$work/status.log" 2>&1 &
-status=$!
+start_status_recorder "$cerebellum" "$work/status.log"
 PYTHONPATH="$types" timeout 150 "$python" "$example"
 result=$?
 sleep 1  # the example stops once it sees its last mode; let the recorder print it too
-kill -INT "$status" 2>/dev/null
-wait "$status" 2>/dev/null
+stop_status_recorder
 echo "example exit status: $result"
 [[ $result -eq 0 ]] || exit 1
 # the distinct response lines, in order
-cut -d' ' -f1-9 "$work/status.log" | grep '^mode' | uniq > "$work/steps.log"
+distinct_steps "$work/status.log" 9 "$work/steps.log"
 cat "$work/steps.log"
 fail=0
 steps_log="$work/steps.log"

@@ -19,8 +19,7 @@ rm -rf "$run" && mkdir -p "$run"
 example="$work/seed_sequential.py"
 extract_code_block "$seed" '^#### 2\.4\.2' '^```python' "$example" "Input a toml ctrl file number"
 cp "$(dirname "$0")/seed_sequential/cyberdog2_ctrl.toml" "$run/"
-"$cerebellum" status --rate 50 --count 100000 --timeout 10 > "$work/status.log" 2>&1 &
-status=$!
+start_status_recorder "$cerebellum" "$work/status.log"
 (cd "$run" && echo 0 | PYTHONPATH="$types" timeout -s INT 90 "$python" "$example") > "$work/example.log" 2>&1 &
 client=$!
 # the whole sequence lasts 16.5 s of robot time
@@ -32,10 +31,9 @@ done
 kill -INT "$client" 2>/dev/null
 wait "$client"
 sleep 0.5
-kill -INT "$status" 2>/dev/null
-wait "$status" 2>/dev/null
+stop_status_recorder
 cat "$work/example.log"
-cut -d' ' -f1-11 "$work/status.log" | grep '^mode' | uniq > "$work/steps.log"
+distinct_steps "$work/status.log" 11 "$work/steps.log"
 grep -v 'switch 1 (TRANS' "$work/steps.log"
 fail=0
 steps_log="$work/steps.log"

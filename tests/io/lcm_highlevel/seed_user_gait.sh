@@ -21,16 +21,14 @@ extract_code_block "$seed" '^#### 2\.4\.3' '^```python' "$example" "Gait_Params_
 cp "$source_dir/config/user_gaits/moonwalk_def.toml" "$run/Gait_Def_moonwalk.toml"
 cp "$source_dir/config/user_gaits/moonwalk_params.toml" "$run/Gait_Params_moonwalk.toml"
 cp "$(dirname "$0")/seed_user_gait/Usergait_List.toml" "$run/Usergait_List.toml"
-"$cerebellum" status --rate 50 --count 100000 --timeout 10 > "$work/status.log" 2>&1 &
-status=$!
+start_status_recorder "$cerebellum" "$work/status.log"
 (cd "$run" && PYTHONPATH="$types" timeout 60 "$python" "$example")
 result=$?
 sleep 1
-kill -INT "$status" 2>/dev/null
-wait "$status" 2>/dev/null
+stop_status_recorder
 echo "example exit status: $result"
 [[ $result -eq 0 ]] || exit 1
-cut -d' ' -f1-9 "$work/status.log" | grep '^mode' | uniq > "$work/steps.log"
+distinct_steps "$work/status.log" 9 "$work/steps.log"
 grep -v 'switch 1 (TRANS' "$work/steps.log"
 fail=0
 steps_log="$work/steps.log"
