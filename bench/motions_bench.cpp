@@ -12,6 +12,7 @@
 
 #include "app/lockstep_client.hpp"
 #include "app/simulated_robot.hpp"
+#include "core/orientation.hpp"
 #include "motions/motion_folder.hpp"
 
 namespace {
@@ -30,8 +31,7 @@ struct Figures {
 };
 
 Eigen::Vector3d rpy_of(const GroundTruth& g) {
-  const Eigen::Matrix3d r = Eigen::Quaterniond(g.quat[0], g.quat[1], g.quat[2], g.quat[3]).toRotationMatrix();
-  return {std::atan2(r(2, 1), r(2, 2)), std::asin(-std::clamp(r(2, 0), -1.0, 1.0)), std::atan2(r(1, 0), r(0, 0))};
+  return rpy_from_quaternion(Eigen::Quaterniond(g.quat[0], g.quat[1], g.quat[2], g.quat[3]));
 }
 
 Figures run_motion(int id, unsigned seed) {

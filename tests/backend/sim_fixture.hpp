@@ -1,8 +1,12 @@
 // Shared set-up for simulation tests: the project's model and a lockstep loop around it.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
+
+#include <Eigen/Geometry>
 
 #include "app/control_loop.hpp"
 #include "backend/mujoco_backend.hpp"
@@ -19,6 +23,14 @@ inline MujocoBackendConfig sim_config(double initial_height_m = 0.3, bool noise 
   config.noise.enabled = noise;
   config.noise.seed = seed;
   return config;
+}
+
+// roll, pitch, yaw (ZYX) of the simulator's trunk orientation, from its rotation matrix: the tests'
+// own check, independent of the MC's rpy_from_quaternion
+inline Eigen::Vector3d truth_rpy(const GroundTruth& truth) {
+  const Eigen::Matrix3d r =
+      Eigen::Quaterniond(truth.quat[0], truth.quat[1], truth.quat[2], truth.quat[3]).toRotationMatrix();
+  return {std::atan2(r(2, 1), r(2, 2)), std::asin(-std::clamp(r(2, 0), -1.0, 1.0)), std::atan2(r(1, 0), r(0, 0))};
 }
 
 // a backend, an estimator and a loop for one controller, stepped in lockstep

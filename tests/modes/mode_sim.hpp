@@ -91,10 +91,7 @@ struct ModeSim {
     const GroundTruth t = backend.ground_truth();
     return {t.quat[0], t.quat[1], t.quat[2], t.quat[3]};
   }
-  Eigen::Vector3d true_rpy() const {
-    const Eigen::Matrix3d r = true_orientation().toRotationMatrix();
-    return {std::atan2(r(2, 1), r(2, 2)), std::asin(-std::clamp(r(2, 0), -1.0, 1.0)), std::atan2(r(1, 0), r(0, 0))};
-  }
+  Eigen::Vector3d true_rpy() const { return truth_rpy(backend.ground_truth()); }
   double true_height() const { return backend.ground_truth().position[2]; }
   Eigen::Vector3d true_position() const {
     const GroundTruth t = backend.ground_truth();

@@ -6,6 +6,7 @@
 #include <cmath>
 
 #include "app/simulated_robot.hpp"
+#include "backend/sim_fixture.hpp"
 #include "io/udp_aliengo/aliengo_session.hpp"
 
 namespace cerebellum::testing {
@@ -47,11 +48,7 @@ struct AlienGoSim {
 
   // simulator truth
   GroundTruth truth() { return mc.simulation().ground_truth(); }
-  Eigen::Vector3d true_rpy() {
-    const GroundTruth t = truth();
-    const Eigen::Matrix3d r = Eigen::Quaterniond(t.quat[0], t.quat[1], t.quat[2], t.quat[3]).toRotationMatrix();
-    return {std::atan2(r(2, 1), r(2, 2)), std::asin(-std::clamp(r(2, 0), -1.0, 1.0)), std::atan2(r(1, 0), r(0, 0))};
-  }
+  Eigen::Vector3d true_rpy() { return truth_rpy(truth()); }
   Eigen::Vector2d true_xy() { return {truth().position[0], truth().position[1]}; }
   double true_height() { return truth().position[2]; }
   bool all_feet_down() {
