@@ -2,6 +2,8 @@
 
 #include <chrono>
 
+#include "core/joint_layout.hpp"
+
 namespace cerebellum {
 
 ConsoleReporter::ConsoleReporter(std::FILE* out, double interval_s) : out_(out), interval_s_(interval_s) {
@@ -37,7 +39,6 @@ void ConsoleReporter::print(const CycleRecord& record) {
   const RobotState& s = record.state;
   std::fprintf(out_, "t=%7.2f s  height=%.3f m  rpy=(%+.2f %+.2f %+.2f)  guard=0x%02x\n", s.time_s, s.height_m,
                s.rpy.x(), s.rpy.y(), s.rpy.z(), record.safety.flags);
-  static constexpr const char* kLegNames[kNumLegs] = {"FR", "FL", "RR", "RL"};
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     std::fprintf(out_,
                  "    %s q=(%+.3f %+.3f %+.3f) rad  qd=(%+6.2f %+6.2f %+6.2f) rad/s  tau=(%+5.2f %+5.2f %+5.2f) Nm\n",

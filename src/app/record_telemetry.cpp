@@ -13,8 +13,8 @@
 namespace cerebellum {
 namespace {
 
-constexpr const char* kLegNames[kNumLegs] = {"fr", "fl", "rr", "rl"};
-constexpr const char* kJointNames[kJointsPerLeg] = {"abad", "hip", "knee"};
+// the CSV columns name legs in lower case
+constexpr const char* kLegColumnNames[kNumLegs] = {"fr", "fl", "rr", "rl"};
 
 void append_number(std::string& line, double value) {
   char text[32];
@@ -57,7 +57,7 @@ std::string telemetry_header() {
   for (const char* quantity : {"tau", "temp"}) {
     for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
       for (std::size_t joint = 0; joint < kJointsPerLeg; ++joint) {
-        header += std::string(",") + quantity + "_" + kLegNames[leg] + "_" + kJointNames[joint] +
+        header += std::string(",") + quantity + "_" + kLegColumnNames[leg] + "_" + kJointNames[joint] +
                   (std::strcmp(quantity, "tau") == 0 ? "_nm" : "_c");
       }
     }

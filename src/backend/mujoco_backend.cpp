@@ -6,11 +6,10 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "core/joint_layout.hpp"
+
 namespace cerebellum {
 namespace {
-
-constexpr std::array<const char*, kNumLegs> kLegNames{"FR", "FL", "RR", "RL"};
-constexpr std::array<const char*, kJointsPerLeg> kJointNames{"abad", "hip", "knee"};
 
 int require_id(const mjModel* model, mjtObj type, const std::string& name, const std::string& path) {
   const int id = mj_name2id(model, type, name.c_str());

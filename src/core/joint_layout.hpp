@@ -12,8 +12,11 @@ inline constexpr std::size_t kNumJoints = kNumLegs * kJointsPerLeg;
 
 // legs in this order everywhere: front right, front left, rear right, rear left
 enum class Leg : std::size_t { FR = 0, FL = 1, RR = 2, RL = 3 };
+// their names, in that order (messages, model element names)
+inline constexpr std::array<const char*, kNumLegs> kLegNames{"FR", "FL", "RR", "RL"};
 // joints of a leg: abad (about x), hip (about y), knee (about y)
 enum class Joint : std::size_t { Abad = 0, Hip = 1, Knee = 2 };
+inline constexpr std::array<const char*, kJointsPerLeg> kJointNames{"abad", "hip", "knee"};
 
 template <typename T>
 using JointArray = std::array<T, kNumJoints>;

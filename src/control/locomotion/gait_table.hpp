@@ -33,6 +33,8 @@ inline constexpr double kDefaultStepHeightM = 0.06;
 inline constexpr int kStandGaitId = 1;
 inline constexpr int kStandWithoutPushRecoveryGaitId = 31;
 inline constexpr int kVariableTrotGaitId = 26;
+// the pronk: its flight is the longest of the table, the most a user gait may fly
+inline constexpr int kPronkGaitId = 2;
 // the passive trot ("walk the dog"): stands until pulled, then trots along with the pull
 inline constexpr int kPassiveTrotGaitId = 4;
 // the uploaded user gait (user_gait_file), run by mode 11 and mode 62 with this gait id

@@ -6,12 +6,11 @@
 
 #include "control/locomotion/foothold.hpp"
 #include "control/locomotion/gait_table.hpp"
+#include "core/joint_layout.hpp"
 #include "modes/command_ranges.hpp"
 
 namespace cerebellum {
 namespace {
-
-constexpr const char* kLegNames[kNumLegs] = {"FR", "FL", "RR", "RL"};
 
 // each leg's landing x, y in the packed fields
 Eigen::Vector2d landing_of(const HighLevelCommand& step, std::size_t leg) {
@@ -43,7 +42,7 @@ std::string format(const char* pattern, double a, double b = 0.0, double c = 0.0
 }  // namespace
 
 int max_flight_segments() {
-  const GaitCycle pronk = find_gait(2)->cycle;
+  const GaitCycle pronk = find_gait(kPronkGaitId)->cycle;
   return pronk.period_segments - pronk.stance_segments;
 }
 
@@ -64,8 +63,9 @@ std::string definition_problem(const UserGaitDefinition& definition) {
     if (flight > max_flight_segments()) {
       return "sections " + std::to_string(flight_start + 1) + ".." + std::to_string(i + 1) +
              " keep every foot off the ground for " + std::to_string(flight) + " units (" +
-             std::to_string(flight * 30) + " ms); the robot flies at most " + std::to_string(max_flight_segments()) +
-             " units (" + std::to_string(max_flight_segments() * 30) + " ms)";
+             format("%.0f ms", flight * kGaitSegmentS * 1e3) + "); the robot flies at most " +
+             std::to_string(max_flight_segments()) + " units (" +
+             format("%.0f ms", max_flight_segments() * kGaitSegmentS * 1e3) + ")";
     }
   }
   if (total * kGaitSegmentS > kMaxUserGaitS) {

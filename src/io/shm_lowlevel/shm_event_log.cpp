@@ -8,8 +8,6 @@
 namespace cerebellum {
 namespace {
 
-constexpr const char* kLegNames[kNumLegs] = {"FR", "FL", "RR", "RL"};
-constexpr const char* kJointNames[kJointsPerLeg] = {"abad", "hip", "knee"};
 constexpr int kClientLinesPerSecond = 5;
 
 }  // namespace
