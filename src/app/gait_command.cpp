@@ -4,11 +4,10 @@
 
 #include <chrono>
 #include <cstdio>
-#include <fstream>
 #include <optional>
-#include <sstream>
 
 #include "app/cmd_options.hpp"
+#include "core/text_file.hpp"
 #include "file_send_lcmt.hpp"
 #include "io/lcm_highlevel/highlevel_wire.hpp"
 #include "io/lcm_highlevel/user_gait_convert.hpp"
@@ -28,12 +27,12 @@ constexpr const char* kUsage =
     "  --ttl N      multicast ttl, 0..255 (default 255; 0 keeps packets on this host)\n"
     "  --timeout S  wait at most S s for each answer (default 2)\n";
 
-std::optional<std::string> read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) return std::nullopt;
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+// a gait file as the MC would take it (at most its size limit); prints why not
+std::optional<std::string> read_gait_file(const char* verb, const std::string& path) {
+  std::string error;
+  std::optional<std::string> text = read_text_file(path, kMaxUserGaitFileBytes, error);
+  if (!text) std::fprintf(stderr, "cerebellum gait %s: %s: %s\n", verb, path.c_str(), error.c_str());
+  return text;
 }
 
 // why the MC would refuse the text (the checks of the adapter), or ""
@@ -74,11 +73,8 @@ std::optional<int> send_file(lcm::LCM& lcm, ResultListener& listener, const std:
 }
 
 int convert(const std::string& path) {
-  const std::optional<std::string> text = read_text(path);
-  if (!text) {
-    std::fprintf(stderr, "cerebellum gait convert: cannot read %s\n", path.c_str());
-    return 2;
-  }
+  const std::optional<std::string> text = read_gait_file("convert", path);
+  if (!text) return 2;
   const UserGaitConversion converted = convert_gait_parameters(*text);
   if (!converted.error.empty()) {
     std::fprintf(stderr, "cerebellum gait convert: %s: %s\n", path.c_str(), converted.error.c_str());
@@ -117,11 +113,8 @@ int upload(const std::vector<std::string>& args) {
   }
   std::string texts[2];
   for (std::size_t k = 0; k < 2; ++k) {
-    const std::optional<std::string> text = read_text(files[k]);
-    if (!text) {
-      std::fprintf(stderr, "cerebellum gait upload: cannot read %s\n", files[k].c_str());
-      return 2;
-    }
+    const std::optional<std::string> text = read_gait_file("upload", files[k]);
+    if (!text) return 2;
     texts[k] = *text;
   }
   if (!is_converted_gait_parameters(texts[1])) {

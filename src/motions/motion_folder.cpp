@@ -2,10 +2,11 @@
 
 #include <algorithm>
 #include <filesystem>
-#include <fstream>
-#include <sstream>
+#include <optional>
+#include <utility>
 #include <vector>
 
+#include "core/text_file.hpp"
 #include "motions/motion_file.hpp"
 
 namespace cerebellum {
@@ -16,18 +17,10 @@ namespace fs = std::filesystem;
 constexpr std::size_t kMaxFilesPerFolder = 200;
 
 std::string read_text(const fs::path& file) {
-  std::error_code error;
-  const std::uintmax_t size = fs::file_size(file, error);
-  if (error) throw MotionFileError(file.string() + ": cannot be read: " + error.message());
-  if (size > kMaxMotionFileBytes) {
-    throw MotionFileError(file.string() + ": is " + std::to_string(size) + " bytes, more than the limit of " +
-                          std::to_string(kMaxMotionFileBytes));
-  }
-  std::ifstream in(file, std::ios::binary);
-  if (!in) throw MotionFileError(file.string() + ": cannot be opened");
-  std::ostringstream text;
-  text << in.rdbuf();
-  return text.str();
+  std::string error;
+  std::optional<std::string> text = read_text_file(file.string(), kMaxMotionFileBytes, error);
+  if (!text) throw MotionFileError(file.string() + ": " + error);
+  return std::move(*text);
 }
 
 }  // namespace

@@ -1,9 +1,10 @@
 #include "io/lcm_highlevel/motion_gaits.hpp"
 
-#include <fstream>
-#include <sstream>
+#include <optional>
 #include <stdexcept>
+#include <utility>
 
+#include "core/text_file.hpp"
 #include "io/lcm_highlevel/highlevel_wire.hpp"
 #include "io/lcm_highlevel/user_gait_convert.hpp"
 #include "io/lcm_highlevel/user_gait_file.hpp"
@@ -13,14 +14,10 @@ namespace cerebellum {
 namespace {
 
 std::string read_text(const std::string& path) {
-  std::ifstream in(path, std::ios::binary);
-  if (!in) throw std::invalid_argument(path + ": cannot be read");
-  std::ostringstream text;
-  text << in.rdbuf();
-  if (text.str().size() > kMaxUserGaitFileBytes) {
-    throw std::invalid_argument(path + ": more than " + std::to_string(kMaxUserGaitFileBytes) + " bytes");
-  }
-  return text.str();
+  std::string error;
+  std::optional<std::string> text = read_text_file(path, kMaxUserGaitFileBytes, error);
+  if (!text) throw std::invalid_argument(path + ": " + error);
+  return std::move(*text);
 }
 
 UserGaitFile parse_checked(const std::string& path, const std::string& text, UserGaitFile::Kind kind) {
