@@ -60,9 +60,9 @@ std::string describe(const localization_lcmt& o) {
 
 HighLevelClientOptions client_options(int ttl) {
   HighLevelClientOptions options;
-  options.command_url = highlevel_url(7671, ttl);
-  options.response_url = highlevel_url(7670, ttl);
-  options.odometry_url = highlevel_url(7667, ttl);
+  options.command_url = highlevel_url(kCommandPort, ttl);
+  options.response_url = highlevel_url(kResponsePort, ttl);
+  options.odometry_url = highlevel_url(kOdometryPort, ttl);
   return options;
 }
 

@@ -33,6 +33,10 @@ std::string status_usage();
 CmdOptions parse_cmd_options(const std::vector<std::string>& args);
 StatusOptions parse_status_options(const std::vector<std::string>& args);
 
+// the interface's ports: commands and user gait files, responses, odometry
+inline constexpr int kCommandPort = 7671;
+inline constexpr int kResponsePort = 7670;
+inline constexpr int kOdometryPort = 7667;
 // the interface's url on one port with the given ttl, e.g. udpm://239.255.76.67:7671?ttl=255
 std::string highlevel_url(int port, int ttl);
 

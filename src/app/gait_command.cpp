@@ -126,9 +126,10 @@ int upload(const std::vector<std::string>& args) {
     texts[1] = converted.text;
     std::printf("%s: converted from the human form (%zu bytes)\n", files[1].c_str(), texts[1].size());
   }
-  lcm::LCM lcm(highlevel_url(7671, ttl));
+  const std::string url = highlevel_url(kCommandPort, ttl);
+  lcm::LCM lcm(url);
   if (!lcm.good()) {
-    std::fprintf(stderr, "cerebellum gait upload: cannot open LCM on %s\n", highlevel_url(7671, ttl).c_str());
+    std::fprintf(stderr, "cerebellum gait upload: cannot open LCM on %s\n", url.c_str());
     return 2;
   }
   ResultListener listener;
