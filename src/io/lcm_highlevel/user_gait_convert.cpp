@@ -12,8 +12,6 @@
 namespace cerebellum {
 namespace {
 
-constexpr std::string_view kParametersHeader = "# Gait Params";
-
 template <std::size_t N>
 bool read_numbers(const toml::table& table, std::string_view key, std::size_t index, std::array<double, N>& out,
                   TomlProblem& problem) {
@@ -69,7 +67,7 @@ bool is_converted_gait_parameters(std::string_view text) {
 
 UserGaitConversion convert_gait_parameters(std::string_view human_text) {
   UserGaitConversion result;
-  if (human_text.substr(0, kParametersHeader.size()) != kParametersHeader) {
+  if (human_text.substr(0, kGaitParametersHeader.size()) != kGaitParametersHeader) {
     result.error = "does not begin with '# Gait Params'";
     return result;
   }
@@ -80,7 +78,7 @@ UserGaitConversion convert_gait_parameters(std::string_view human_text) {
   const toml::array* steps = toml_entries(document, "step", kMaxGaitEntries, {}, problem);
   std::ostringstream out;
   out.precision(9);
-  out << kParametersHeader << "\n";
+  out << kGaitParametersHeader << "\n";
   for (std::size_t i = 0; steps != nullptr && i < steps->size(); ++i) {
     const toml::table& step = *steps->get(i)->as_table();
     check_toml_keys(step,

@@ -13,8 +13,6 @@
 namespace cerebellum {
 namespace {
 
-constexpr std::string_view kDefinitionHeader = "# Gait Def";
-constexpr std::string_view kParametersHeader = "# Gait Params";
 constexpr long kMaxSectionUnits = 10000;  // 300 s
 
 UserGaitDefinition read_definition(const toml::table& document, TomlProblem& problem) {
@@ -70,9 +68,9 @@ UserGaitParameters read_parameters(const toml::table& document, TomlProblem& pro
 UserGaitParse parse_user_gait_file(std::string_view text) {
   UserGaitParse result;
   UserGaitFile file;
-  if (text.substr(0, kDefinitionHeader.size()) == kDefinitionHeader) {
+  if (text.substr(0, kGaitDefinitionHeader.size()) == kGaitDefinitionHeader) {
     file.kind = UserGaitFile::Kind::Definition;
-  } else if (text.substr(0, kParametersHeader.size()) == kParametersHeader) {
+  } else if (text.substr(0, kGaitParametersHeader.size()) == kGaitParametersHeader) {
     file.kind = UserGaitFile::Kind::Parameters;
   } else {
     result.error = "does not begin with '# Gait Def' or '# Gait Params'";

@@ -15,6 +15,10 @@
 
 namespace cerebellum {
 
+// the first line of each kind of file
+inline constexpr std::string_view kGaitDefinitionHeader = "# Gait Def";
+inline constexpr std::string_view kGaitParametersHeader = "# Gait Params";
+
 inline constexpr double kGaitSectionUnitS = kGaitSegmentS;  // one unit of a section's duration
 inline constexpr std::size_t kMaxGaitEntries = 1000;
 
