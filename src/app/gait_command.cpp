@@ -39,8 +39,7 @@ std::optional<std::string> read_gait_file(const char* verb, const std::string& p
 std::string refusal_reason(const std::string& text) {
   const UserGaitParse parsed = parse_user_gait_file(text);
   if (!parsed.file) return parsed.error;
-  return parsed.file->kind == UserGaitFile::Kind::Definition ? definition_problem(parsed.file->definition)
-                                                             : parameters_problem(parsed.file->parameters);
+  return user_gait_file_problem(*parsed.file);
 }
 
 class ResultListener {

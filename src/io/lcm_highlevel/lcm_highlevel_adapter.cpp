@@ -124,10 +124,7 @@ void LcmHighLevelAdapter::on_gait_file(const lcm::ReceiveBuffer* buffer, const s
            std::to_string(buffer->data_size) + " bytes";
   } else if (const UserGaitParse parsed = parse_user_gait_file(text); !parsed.file) {
     line = "user_gait_file refused (result 1): " + parsed.error;
-  } else if (const std::string unsafe = parsed.file->kind == UserGaitFile::Kind::Definition
-                                            ? definition_problem(parsed.file->definition)
-                                            : parameters_problem(parsed.file->parameters);
-             !unsafe.empty()) {
+  } else if (const std::string unsafe = user_gait_file_problem(*parsed.file); !unsafe.empty()) {
     line = "user_gait_file refused (result 1): " + unsafe + "; the previous gait is kept";
   } else {
     accepted = true;

@@ -27,8 +27,7 @@ UserGaitFile parse_checked(const std::string& path, const std::string& text, Use
     throw std::invalid_argument(
         path + (kind == UserGaitFile::Kind::Definition ? ": is not a gait definition" : ": is not gait parameters"));
   }
-  const std::string problem = kind == UserGaitFile::Kind::Definition ? definition_problem(parsed.file->definition)
-                                                                     : parameters_problem(parsed.file->parameters);
+  const std::string problem = user_gait_file_problem(*parsed.file);
   if (!problem.empty()) throw std::invalid_argument(path + ": " + problem);
   return *parsed.file;
 }

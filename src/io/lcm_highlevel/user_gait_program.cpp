@@ -103,6 +103,11 @@ std::string parameters_problem(const UserGaitParameters& parameters) {
   return "";
 }
 
+std::string user_gait_file_problem(const UserGaitFile& file) {
+  return file.kind == UserGaitFile::Kind::Definition ? definition_problem(file.definition)
+                                                     : parameters_problem(file.parameters);
+}
+
 UserGaitStep decode_user_gait_step(const HighLevelCommand& step) {
   const UserGaitRanges ranges;
   UserGaitStep decoded;

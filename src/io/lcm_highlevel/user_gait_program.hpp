@@ -24,6 +24,8 @@ inline constexpr double kMaxUserGaitS = 120.0;
 std::string definition_problem(const UserGaitDefinition& definition);
 // empty when the parameters can be run, else why not (step, key, expected vs found)
 std::string parameters_problem(const UserGaitParameters& parameters);
+// the one of the two that applies to a parsed file
+std::string user_gait_file_problem(const UserGaitFile& file);
 
 // the step a parameter block decodes to (values clamped as docs/highlevel.md lists)
 UserGaitStep decode_user_gait_step(const HighLevelCommand& step);
