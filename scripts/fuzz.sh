@@ -4,7 +4,7 @@
 # and coverage; a crash, leak, sanitizer report or failed check stops it with the reproducer.
 #   scripts/fuzz.sh [SECONDS] [target...]      (targets: high_cmd robot_control_cmd motor_ctrl
 #                                               user_gait_file motion_file shm_command sim_command_text
-#                                               config_yaml)
+#                                               config_yaml fault_scenario)
 # FUZZ_SEED=N fixes libFuzzer's random seed (CI uses 1, so a run can be repeated); default: random.
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -12,7 +12,8 @@ seconds=${1:-10}
 shift || true
 targets=("$@")
 [[ ${#targets[@]} -gt 0 ]] ||
-  targets=(high_cmd robot_control_cmd motor_ctrl user_gait_file motion_file shm_command sim_command_text config_yaml)
+  targets=(high_cmd robot_control_cmd motor_ctrl user_gait_file motion_file shm_command sim_command_text config_yaml
+    fault_scenario)
 programs=()
 for t in "${targets[@]}"; do programs+=("fuzz_$t"); done
 "$root/scripts/build_sanitized.sh" "${programs[@]}" > "$root/build-sanitize/fuzz-build.log" 2>&1 ||

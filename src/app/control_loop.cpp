@@ -12,6 +12,7 @@ ControlLoop::ControlLoop(RobotBackend& backend, StateEstimator& estimator, Motio
       estimator_(estimator),
       controller_(controller),
       guard_limits_(guard_limits),
+      health_(guard_limits.health),
       period_s_(period_s),
       substeps_(0) {
   if (!(period_s > 0.0)) throw std::invalid_argument("control period must be > 0 s");
@@ -34,13 +35,16 @@ const CycleRecord& ControlLoop::tick() {
   const SensorFrame frame = backend_.read();
   // estimate, with the contacts the control stage planned last tick
   estimator_.update(frame, record_.contact_plan, record_.state);
+  // the robot's health: the controller learns the protection, the guard enforces it
+  record_.health = health_.update(record_.state);
+  controller_.observe_health(record_.health);
   // decide and control: an invalid state gets no command (and no new plan) from the controller
   if (record_.state.valid) {
     controller_.compute(record_.state, record_.command);
     record_.contact_plan = controller_.contact_plan();
   }
   // guard, always last
-  record_.safety = guard_command(record_.state, record_.command, guard_limits_);
+  record_.safety = guard_command(record_.state, record_.command, guard_limits_, record_.health.protection);
   // write, then the robot runs one period
   backend_.write(record_.command);
   for (CycleObserver* observer : observers_) observer->on_cycle(record_);
@@ -59,7 +63,8 @@ void ControlLoop::run_substeps() {
       bool replaced = false;
       for (SubstepParticipant* participant : substep_participants_) replaced |= participant->on_substep(frame, command);
       if (replaced) {
-        record_.substep_safety.flags |= guard_command(record_.state, command, guard_limits_).flags;
+        record_.substep_safety.flags |=
+            guard_command(record_.state, command, guard_limits_, record_.health.protection).flags;
         backend_.write(command);
       }
     }

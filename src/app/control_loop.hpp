@@ -54,6 +54,7 @@ class ControlLoop {
   StateEstimator& estimator_;
   MotionController& controller_;
   GuardLimits guard_limits_;
+  HealthMonitor health_;
   double period_s_;
   int substeps_;
   CycleRecord record_;

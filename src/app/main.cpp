@@ -6,6 +6,7 @@
 #include "app/cmd_command.hpp"
 #include "app/gait_command.hpp"
 #include "app/log_command.hpp"
+#include "app/fault_command.hpp"
 #include "app/push_command.hpp"
 #include "app/sim_command.hpp"
 
@@ -20,6 +21,7 @@ constexpr const char* kUsage =
     "  log    record the interface's LCM traffic, one lcm-logger per port (cerebellum log --help)\n"
     "  replay play a recorded log back on its ports (cerebellum replay --help)\n"
     "  push   push the simulated robot's trunk with a force (cerebellum push --help)\n"
+    "  fault  inject or clear a fault in the simulated robot (cerebellum fault --help)\n"
     "  gait   convert and upload self-defined gait files (cerebellum gait --help)\n";
 
 }  // namespace
@@ -37,8 +39,10 @@ int main(int argc, char** argv) {
   if (args[0] == "log") return cerebellum::run_log_command(rest);
   if (args[0] == "replay") return cerebellum::run_replay_command(rest);
   if (args[0] == "push") return cerebellum::run_push_command(rest);
+  if (args[0] == "fault") return cerebellum::run_fault_command(rest);
   if (args[0] == "gait") return cerebellum::run_gait_command(rest);
-  std::fprintf(stderr, "cerebellum: unknown command '%s' (accepted: sim, cmd, status, log, replay, push, gait)\n%s",
+  std::fprintf(stderr,
+               "cerebellum: unknown command '%s' (accepted: sim, cmd, status, log, replay, push, fault, gait)\n%s",
                args[0].c_str(), kUsage);
   return 2;
 }

@@ -38,6 +38,7 @@ Mc::Mc(const McConfig& config, McRobot robot)
     : config_(config),
       backend_(std::move(robot.backend)),
       simulation_(robot.simulation),
+      faults_(robot.faults),
       modes_(mode_set_config(config)),
       machine_(config.loop_period_s, startup_command(config.startup)),
       arbiter_(machine_),

@@ -30,6 +30,8 @@ class Mc {
   bool simulated() const { return simulation_ != nullptr; }
   // throws std::logic_error when the robot is not simulated
   Simulation& simulation();
+  // the robot's fault injector, or nullptr when it has none
+  FaultInjectingBackend* faults() { return faults_; }
   HighLevelMachine& machine() { return machine_; }
   // where the high-level interface hands over uploaded user gaits
   UserGaitSlot& user_gait_slot() { return modes_.user_gait_slot(); }
@@ -42,6 +44,7 @@ class Mc {
   McConfig config_;
   std::unique_ptr<RobotBackend> backend_;
   Simulation* simulation_;
+  FaultInjectingBackend* faults_;
   BodyStateEstimator estimator_;
   ModeSet modes_;
   HighLevelMachine machine_;

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "app/yaml_section.hpp"
 #include "core/robot_model.hpp"
 #include "lowlevel/motor_sdk/motor_sdk_user_parameters.hpp"
 
@@ -14,94 +15,6 @@ namespace cerebellum {
 namespace {
 
 namespace fs = std::filesystem;
-
-std::string join(const std::set<std::string>& words) {
-  std::string out;
-  for (const std::string& w : words) out += (out.empty() ? "" : ", ") + w;
-  return out;
-}
-
-// reads one mapping of the file, remembering which keys exist so unknown ones are reported
-class SectionReader {
- public:
-  SectionReader(const YAML::Node& node, std::string file, std::string section, std::set<std::string> accepted)
-      : node_(node), file_(std::move(file)), section_(std::move(section)), accepted_(std::move(accepted)) {
-    if (!node_.IsMap()) fail(section_, "must be a mapping of keys (accepted: " + join(accepted_) + ")");
-    std::set<std::string> seen;
-    for (const auto& entry : node_) {
-      // a key that is a list or a mapping (YAML allows it) names nothing here
-      if (!entry.first.IsScalar())
-        fail(section_, "has a key that is not a plain name (accepted: " + join(accepted_) + ")");
-      const std::string key = entry.first.Scalar();
-      if (!accepted_.count(key)) fail(section_ + "." + key, "is not a known key (accepted: " + join(accepted_) + ")");
-      // YAML parsers keep the first of two equal keys: a second one is a mistake, not an override
-      if (!seen.insert(key).second) fail(section_ + "." + key, "appears twice; give each key once");
-    }
-  }
-
-  void number(const std::string& key, double& value, double lower, double upper) const {
-    if (!node_[key]) return;
-    double parsed = 0.0;
-    try {
-      parsed = node_[key].as<double>();
-    } catch (const YAML::Exception&) {
-      fail(qualified(key),
-           "must be a number in [" + format(lower) + ", " + format(upper) + "], got '" + scalar(key) + "'");
-    }
-    if (!std::isfinite(parsed) || parsed < lower || parsed > upper) {
-      fail(qualified(key), "must be in [" + format(lower) + ", " + format(upper) + "], got " + scalar(key));
-    }
-    value = parsed;
-  }
-
-  void flag(const std::string& key, bool& value) const {
-    if (!node_[key]) return;
-    try {
-      value = node_[key].as<bool>();
-    } catch (const YAML::Exception&) {
-      fail(qualified(key), "must be true or false, got '" + scalar(key) + "'");
-    }
-  }
-
-  void unsigned_integer(const std::string& key, unsigned& value) const {
-    if (!node_[key]) return;
-    try {
-      value = node_[key].as<unsigned>();
-    } catch (const YAML::Exception&) {
-      fail(qualified(key), "must be an integer >= 0, got '" + scalar(key) + "'");
-    }
-  }
-
-  void text(const std::string& key, std::string& value, const std::set<std::string>& choices = {}) const {
-    if (!node_[key]) return;
-    if (!node_[key].IsScalar()) fail(qualified(key), "must be a string");
-    const std::string parsed = node_[key].as<std::string>();
-    if (!choices.empty() && !choices.count(parsed)) {
-      fail(qualified(key), "must be one of: " + join(choices) + "; got '" + parsed + "'");
-    }
-    value = parsed;
-  }
-
-  [[noreturn]] void fail(const std::string& key, const std::string& what) const {
-    throw ConfigError("config " + file_ + ": " + key + " " + what);
-  }
-
- private:
-  std::string qualified(const std::string& key) const { return section_ + "." + key; }
-  std::string scalar(const std::string& key) const {
-    return node_[key].IsScalar() ? node_[key].Scalar() : std::string("<not a scalar>");
-  }
-  static std::string format(double v) {
-    std::ostringstream out;
-    out << v;
-    return out.str();
-  }
-
-  YAML::Node node_;
-  std::string file_;
-  std::string section_;
-  std::set<std::string> accepted_;
-};
 
 std::string find_default_model() {
   for (const char* dir : {CEREBELLUM_SOURCE_MODEL_DIR, CEREBELLUM_INSTALL_MODEL_DIR}) {

@@ -5,6 +5,7 @@
 #include <stdexcept>
 #include <string>
 
+#include "app/config_error.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "control/stand_up_controller.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
@@ -40,12 +41,6 @@ struct McConfig {
   MotionFolders motions;         // mode 62's motion files
   SimTruthConfig sim_truth;      // simulation only
   SimControlConfig sim_command;  // simulation only
-};
-
-// raised for a bad file, key or value; the message names the file, the key and what is accepted
-class ConfigError : public std::runtime_error {
- public:
-  using std::runtime_error::runtime_error;
 };
 
 // defaults, with the model found next to the build or install tree

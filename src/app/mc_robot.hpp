@@ -4,6 +4,7 @@
 
 #include <memory>
 
+#include "backend/fault_injecting_backend.hpp"
 #include "backend/robot_backend.hpp"
 #include "backend/simulation.hpp"
 
@@ -12,6 +13,8 @@ namespace cerebellum {
 struct McRobot {
   std::unique_ptr<RobotBackend> backend;
   Simulation* simulation = nullptr;  // nullptr on hardware; must live as long as backend
+  // the fault injector the backend is (or wraps), or nullptr; must live as long as backend
+  FaultInjectingBackend* faults = nullptr;
 };
 
 }  // namespace cerebellum

@@ -1,20 +1,14 @@
 #include "app/push_command.hpp"
 
-#include <lcm/lcm-cpp.hpp>
-
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <optional>
-#include <random>
 #include <stdexcept>
 
+#include "app/sim_command_client.hpp"
 #include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_sim_control/sim_command_text.hpp"
-#include "io/lcm_sim_control/sim_control_adapter.hpp"
-#include "sim_command_lcmt.hpp"
-#include "sim_command_result_lcmt.hpp"
 
 namespace cerebellum {
 namespace {
@@ -104,38 +98,7 @@ int run_push_command(const std::vector<std::string>& args) {
     std::fputs(usage().c_str(), stdout);
     return 0;
   }
-  try {
-    std::unique_ptr<lcm::LCM> lcm = open_lcm_url(options.url, "push");
-    std::optional<sim_command_result_lcmt> answer;
-    std::random_device entropy;
-    const std::int64_t request_id = (static_cast<std::int64_t>(entropy()) << 31) ^ entropy();
-    struct Handler {
-      std::int64_t id;
-      std::optional<sim_command_result_lcmt>* answer;
-      void on_result(const lcm::ReceiveBuffer*, const std::string&, const sim_command_result_lcmt* result) {
-        if (result->request_id == id) *answer = *result;
-      }
-    } handler{request_id, &answer};
-    lcm->subscribe(kSimCommandResultChannel, &Handler::on_result, &handler);
-    sim_command_lcmt command;
-    command.request_id = request_id;
-    command.command = push_command_text(options.pulse);
-    lcm->publish(kSimCommandChannel, &command);
-    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(options.timeout_s);
-    while (!answer && std::chrono::steady_clock::now() < deadline) handle_pending(*lcm, 50);
-    if (!answer) {
-      std::fprintf(stderr,
-                   "cerebellum push: no simulation answered on %s within %g s (is `cerebellum sim` running, in "
-                   "this network namespace?)\n",
-                   options.url.c_str(), options.timeout_s);
-      return 1;
-    }
-    std::printf("%s\n", answer->reason.c_str());
-    return answer->result == 0 ? 0 : 1;
-  } catch (const std::exception& e) {
-    std::fprintf(stderr, "cerebellum push: %s\n", e.what());
-    return 1;
-  }
+  return send_sim_command(options.url, push_command_text(options.pulse), options.timeout_s, "push");
 }
 
 }  // namespace cerebellum

@@ -12,6 +12,7 @@
 #include "app/record_tools.hpp"
 #include "app/served_endpoints.hpp"
 #include "app/simulated_robot.hpp"
+#include "app/fault_scenario_file.hpp"
 #include "app/stop_signal.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
@@ -26,6 +27,7 @@ namespace cerebellum {
 int run_sim_command(const std::vector<std::string>& args) {
   SimOptions options;
   McConfig config;
+  std::vector<TimedFault> faults;
   try {
     options = parse_sim_options(args);
     if (options.help) {
@@ -34,6 +36,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     }
     config = options.config_path.empty() ? default_config() : load_config(options.config_path);
     if (options.seed) config.robot.noise.seed = *options.seed;
+    if (!options.faults_path.empty()) faults = load_fault_scenario(options.faults_path);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cerebellum sim: %s\n", e.what());
     return 2;
@@ -41,7 +44,7 @@ int run_sim_command(const std::vector<std::string>& args) {
 
   StopSignal stop_signal;
   try {
-    Mc mc = make_simulated_mc(config);
+    Mc mc = make_simulated_mc(config, faults);
     ControlLoop& loop = mc.loop();
     // client interfaces attach here: mc.arbiter() sources, loop observers, substep participants
     ConsoleReporter reporter(stdout);
@@ -83,7 +86,8 @@ int run_sim_command(const std::vector<std::string>& args) {
     }
     // the simulation's own control channel (pushes): on the odometry URL with sim_truth
     std::optional<SimControlAdapter> sim_control;
-    if (config.sim_command.enabled) sim_control.emplace(mc.simulation(), config.highlevel.odometry_url, stderr);
+    if (config.sim_command.enabled)
+      sim_control.emplace(mc.simulation(), mc.faults(), config.highlevel.odometry_url, stderr);
     SimTools tools(mc, options);
 
     char speed[32] = "max";

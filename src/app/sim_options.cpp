@@ -51,7 +51,7 @@ void check_tool_options(const SimOptions& options, const std::vector<std::string
 }  // namespace
 
 std::string sim_usage() {
-  return "usage: cerebellum sim [--speed X|max] [--duration S] [--config FILE] [--seed N]\n"
+  return "usage: cerebellum sim [--speed X|max] [--duration S] [--config FILE] [--seed N] [--faults FILE]\n"
          "                      [--viewer [--viewer-screenshot FILE.png]]\n"
          "                      [--record FILE.mp4 [--record-fps F] [--record-size WxH]]\n"
          "                      [--telemetry FILE.csv [--telemetry-rate HZ]]\n"
@@ -59,6 +59,8 @@ std::string sim_usage() {
          "  --duration S  stop after S seconds of robot time (S > 0); default: run until Ctrl-C\n"
          "  --config FILE YAML configuration (see docs/configuration.md)\n"
          "  --seed N      seed of the sensor noise (integer >= 0)\n"
+         "  --faults FILE a fault scenario (YAML: faults at simulated times; docs/safety.md);\n"
+         "                at run time: cerebellum fault --help\n"
          "  --viewer      live 3D window (needs a display): space pause, S slow motion, F follow,\n"
          "                ctrl+right drag push, Esc quit\n"
          "  --viewer-screenshot FILE.png  save the viewer's last frame when the run ends\n"
@@ -101,6 +103,10 @@ SimOptions parse_sim_options(const std::vector<std::string>& args) {
         throw std::invalid_argument("--seed: must be an integer in [0, 4294967295], got " + text);
       }
       options.seed = static_cast<unsigned>(seed);
+    } else if (arg == "--faults") {
+      options.faults_path = value();
+      if (options.faults_path.empty())
+        throw std::invalid_argument("--faults: needs a scenario file such as faults.yaml");
     } else if (arg == "--viewer") {
       options.viewer = true;
     } else if (arg == "--viewer-screenshot") {

@@ -12,6 +12,7 @@ struct SimOptions {
   double duration_s = -1.0;  // < 0: until SIGINT/SIGTERM
   std::string config_path;   // empty: built-in defaults
   std::optional<unsigned> seed;
+  std::string faults_path;  // a fault scenario file (docs/safety.md); empty: none
   bool help = false;
   // tools (docs/tools.md)
   bool viewer = false;

@@ -20,6 +20,15 @@ double limit_motor_torque(double tau_nm, double qd_rad_s, const MotorLimits& lim
   return std::clamp(tau_nm, -available, available);
 }
 
+std::uint32_t motor_driver_faults(double temperature_c, double bus_voltage_v) {
+  std::uint32_t faults = kMotorOk;
+  if (temperature_c >= robot::kMotorWarningTemperatureC) faults |= kMotorTemperatureWarning;
+  if (temperature_c >= robot::kMotorShutdownTemperatureC) faults |= kMotorOverTemperature;
+  if (bus_voltage_v < robot::kDriverUnderVoltageV) faults |= kMotorUnderVoltage;
+  if (bus_voltage_v > robot::kDriverOverVoltageV) faults |= kMotorOverVoltage;
+  return faults;
+}
+
 MotorThermalModel::MotorThermalModel(const MotorThermalParameters& parameters)
     : parameters_(parameters), temperature_c_(parameters.ambient_c) {}
 

@@ -2,6 +2,9 @@
 // torque limit, speed-torque curve, and a first-order winding temperature model.
 #pragma once
 
+#include <cstdint>
+
+#include "core/motor_health.hpp"
 #include "core/robot_model.hpp"
 
 namespace cerebellum {
@@ -28,6 +31,11 @@ struct MotorThermalParameters {
   double torque_constant_nm_per_a = robot::kMotorKt;  // motor side
   double winding_resistance_ohm = robot::kMotorResistanceOhm;
 };
+
+// what a driver reports of its own condition: the coil's warning (82 deg C) and shutdown
+// (87 deg C) temperatures, a bus voltage outside the driver's range (MotorFault bits); a driver
+// reporting an error stops driving its motor
+std::uint32_t motor_driver_faults(double temperature_c, double bus_voltage_v);
 
 // copper loss heats the winding, conduction to ambient cools it
 class MotorThermalModel {

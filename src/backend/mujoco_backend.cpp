@@ -23,7 +23,8 @@ int sensor_address(const mjModel* model, const std::string& name, const std::str
 
 }  // namespace
 
-MujocoBackend::MujocoBackend(const MujocoBackendConfig& config) : config_(config), rng_(config.noise.seed) {
+MujocoBackend::MujocoBackend(const MujocoBackendConfig& config)
+    : config_(config), battery_(config.battery), rng_(config.noise.seed) {
   if (!std::filesystem::is_regular_file(config.model_path)) {
     throw std::runtime_error("model file not found: " + config.model_path);
   }
@@ -59,6 +60,8 @@ void MujocoBackend::find_model_elements() {
   trunk_body_ = require_id(model_, mjOBJ_BODY, "trunk", config.model_path);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     foot_geom_[leg] = require_id(model_, mjOBJ_GEOM, std::string(kLegNames[leg]) + "_foot", config.model_path);
+    foot_friction_[leg] = model_->geom_friction[3 * foot_geom_[leg]];
+    foot_priority_[leg] = model_->geom_priority[foot_geom_[leg]];
   }
   imu_quat_address_ = sensor_address(model_, "imu_quat", config.model_path);
   imu_gyro_address_ = sensor_address(model_, "imu_gyro", config.model_path);
@@ -96,6 +99,8 @@ SensorFrame MujocoBackend::read() {
     frame.tau[i] = applied_torque_[i];
     frame.temperature_c[i] = thermal_[i].temperature_c();
   }
+  frame.motor_faults = motor_faults_;
+  frame.battery = battery_.reading();
   for (int k = 0; k < 4; ++k) frame.imu_quat[k] = data_->sensordata[imu_quat_address_ + k];
   for (int k = 0; k < 3; ++k) {
     frame.imu_gyro[k] = noisy(data_->sensordata[imu_gyro_address_ + k], noise.gyro_rad_s);
@@ -112,7 +117,9 @@ void MujocoBackend::apply_motor_drivers() {
     const double qd = data_->qvel[dof_address_[i]];
     const double requested = motor_law_torque(command_.q_des[i], command_.qd_des[i], command_.kp[i], command_.kd[i],
                                               command_.tau_ff[i], q, qd);
-    const double torque = std::isfinite(requested) ? limit_motor_torque(requested, qd, config_.motor_limits) : 0.0;
+    // a driver in error has stopped its motor
+    const bool driving = std::isfinite(requested) && (motor_faults_[i] & kMotorErrorBits) == 0;
+    const double torque = driving ? limit_motor_torque(requested, qd, config_.motor_limits) : 0.0;
     applied_torque_[i] = torque;
     data_->ctrl[actuator_id_[i]] = torque;
   }
@@ -128,9 +135,22 @@ void MujocoBackend::advance(double period_s) {
     apply_motor_drivers();
     apply_disturbances();
     mj_step2(model_, data_);
-    for (std::size_t i = 0; i < kNumJoints; ++i) thermal_[i].update(applied_torque_[i], dt);
+    update_power_and_heat(dt);
   }
   sensors_stale_ = true;
+}
+
+void MujocoBackend::update_power_and_heat(double dt_s) {
+  double motor_power_w = 0.0;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    thermal_[i].update(applied_torque_[i], dt_s);
+    motor_power_w += motor_electrical_power_w(applied_torque_[i], data_->qvel[dof_address_[i]]);
+  }
+  battery_.update(motor_power_w, dt_s);
+  const double bus_voltage_v = battery_.reading().voltage_v;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    motor_faults_[i] = motor_driver_faults(thermal_[i].temperature_c(), bus_voltage_v);
+  }
 }
 
 double MujocoBackend::time_s() const { return data_->time; }
@@ -190,6 +210,19 @@ void MujocoBackend::request_force_pulse(const ForcePulse& pulse) {
   std::lock_guard<std::mutex> lock(push_mutex_);
   posted_pulse_ = pulse;
   ++posted_pulses_;
+}
+
+void MujocoBackend::set_foot_friction(std::size_t leg, double friction) {
+  // a contact takes the friction of its higher-priority geom (the larger one between equals)
+  const int geom = foot_geom_.at(leg);
+  model_->geom_priority[geom] = foot_priority_[leg] + 10;
+  model_->geom_friction[3 * geom] = friction;
+}
+
+void MujocoBackend::reset_foot_friction(std::size_t leg) {
+  const int geom = foot_geom_.at(leg);
+  model_->geom_priority[geom] = foot_priority_[leg];
+  model_->geom_friction[3 * geom] = foot_friction_[leg];
 }
 
 void MujocoBackend::take_disturbance_requests() {

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "backend/battery_model.hpp"
 #include "backend/motor_model.hpp"
 #include "backend/push_request.hpp"
 #include "backend/robot_backend.hpp"
@@ -32,6 +33,7 @@ struct MujocoBackendConfig {
   SensorNoise noise;
   MotorLimits motor_limits;
   MotorThermalParameters thermal;
+  BatteryParameters battery;
 };
 
 // the MC runs on it as a RobotBackend; tools and tests see it as a Simulation
@@ -54,6 +56,8 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   void set_external_force(const std::array<double, 3>& force_n) override;
   void request_push(const PushRequest& request) override;
   void request_force_pulse(const ForcePulse& pulse) override;
+  void set_foot_friction(std::size_t leg, double friction) override;
+  void reset_foot_friction(std::size_t leg) override;
 
   double physics_timestep_s() const override;
   const mjModel_* model() const override { return model_; }
@@ -61,6 +65,8 @@ class MujocoBackend final : public RobotBackend, public Simulation {
 
  private:
   void apply_motor_drivers();
+  // after each physics step: coil temperatures, the battery's charge, what the drivers report
+  void update_power_and_heat(double dt_s);
   // the newest posted push request and force pulse, unless the poster holds the mailbox (then
   // they are taken at the next advance)
   void take_disturbance_requests();
@@ -79,12 +85,16 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   JointArray<int> actuator_id_{};
   int trunk_body_ = -1;
   std::array<int, kNumLegs> foot_geom_{};
+  std::array<double, kNumLegs> foot_friction_{};  // the model's sliding friction of each foot
+  std::array<int, kNumLegs> foot_priority_{};
   int imu_quat_address_ = -1;
   int imu_gyro_address_ = -1;
   int imu_accel_address_ = -1;
   JointArray<double> applied_torque_{};
   bool sensors_stale_ = false;
   std::vector<MotorThermalModel> thermal_;
+  BatteryModel battery_;
+  JointArray<std::uint32_t> motor_faults_{};  // what each driver reports (and stops on)
   std::mt19937 rng_;
   std::normal_distribution<double> unit_normal_{0.0, 1.0};
   // push mailbox: written by any thread, read when the robot steps

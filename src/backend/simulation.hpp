@@ -48,6 +48,10 @@ class Simulation {
   // any thread: a force pulse on the trunk COM from the simulation's next step on, for
   // pulse.duration_s of simulated time, added to the push; replaces a pulse still running
   virtual void request_force_pulse(const ForcePulse& pulse) = 0;
+  // the sliding friction between one foot (FR, FL, RR, RL) and whatever it touches, in place of
+  // the contact's own; reset restores the model's. Same thread as the robot's steps
+  virtual void set_foot_friction(std::size_t leg, double friction) = 0;
+  virtual void reset_foot_friction(std::size_t leg) = 0;
 
   // for rendering and inspection: read only, in the thread that steps the robot (or while it
   // does not step)

@@ -5,6 +5,7 @@
 #include "core/contact_plan.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
+#include "safety/health_monitor.hpp"
 
 namespace cerebellum {
 
@@ -13,6 +14,9 @@ class MotionController {
   virtual ~MotionController() = default;
   // called every tick, in the loop thread; must not block, allocate or print
   virtual void compute(const RobotState& state, JointCommand& command) = 0;
+  // called every tick before compute(), also while the state is not valid (compute() is not then):
+  // the health protection of this tick, which the guard enforces on the command whatever it is
+  virtual void observe_health(const HealthVerdict& /*verdict*/) {}
   // the contacts the last compute() planned for the next tick; none unless a gait steps
   virtual ContactPlan contact_plan() const { return std::nullopt; }
 };

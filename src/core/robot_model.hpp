@@ -48,6 +48,19 @@ inline constexpr double kFullTorqueSpeedRadS = 11.52;  // joint side; full torqu
 inline constexpr double kNoLoadSpeedRadS = 30.5;       // joint side; motoring torque falls to 0 here
 inline constexpr double kMotorKt = 0.05;               // N m / A, motor side
 inline constexpr double kMotorResistanceOhm = 0.173;
+// motor coil temperatures (robot-cyberdog2.md): the driver warns, then stops
+inline constexpr double kMotorWarningTemperatureC = 82.0;
+inline constexpr double kMotorShutdownTemperatureC = 87.0;
+
+// battery (robot-cyberdog2.md: 21.6 V pack, 4500 mAh, 97.2 Wh): six lithium-ion cells in series.
+// The reference gives no internal resistance, idle load or driver voltage limits: the figures
+// marked "assumed" are typical of such a pack and board (docs/safety.md)
+inline constexpr int kBatteryCells = 6;
+inline constexpr double kBatteryCapacityAh = 4.5;
+inline constexpr double kBatteryInternalResistanceOhm = 0.12;  // assumed: 6 cells of 20 mOhm
+inline constexpr double kIdleElectricalPowerW = 25.0;          // assumed: boards, sensors, fans
+inline constexpr double kDriverUnderVoltageV = 18.0;           // assumed: 3.0 V per cell
+inline constexpr double kDriverOverVoltageV = 26.0;            // assumed: above a full pack's 25.2 V
 
 // whole-body figures the controllers use
 inline constexpr double kTotalMassKg = 8.52;  // body + legs + rotors of the MJCF model

@@ -17,6 +17,8 @@ struct RobotState {
   JointArray<double> qd{};
   JointArray<double> tau{};
   JointArray<double> temperature_c{};
+  JointArray<std::uint32_t> motor_faults{};  // MotorFault bits as the drivers report them
+  BatteryReading battery;
   // trunk
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // body to world
   Eigen::Vector3d rpy = Eigen::Vector3d::Zero();                    // roll, pitch, yaw (ZYX)

@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "core/joint_layout.hpp"
+#include "core/motor_health.hpp"
 
 namespace cerebellum {
 
@@ -18,6 +19,8 @@ struct SensorFrame {
   std::array<double, 4> imu_quat{1.0, 0.0, 0.0, 0.0};  // w, x, y, z, body to world
   std::array<double, 3> imu_gyro{};                    // rad/s, body frame
   std::array<double, 3> imu_accel{};                   // m/s^2, body frame, includes gravity
+  JointArray<std::uint32_t> motor_faults{};            // MotorFault bits per motor
+  BatteryReading battery;
 };
 
 // what the motors are told; each motor runs tau = tau_ff + kp (q_des - q) + kd (qd_des - qd)

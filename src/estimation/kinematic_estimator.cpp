@@ -30,6 +30,9 @@ void KinematicEstimator::reset() {}
 
 void KinematicEstimator::update(const SensorFrame& frame, const ContactPlan& /*plan*/, RobotState& state) {
   state.time_s = frame.time_s;
+  // what the drivers and the battery report reaches the safety stage even when the sensors fail
+  state.motor_faults = frame.motor_faults;
+  state.battery = frame.battery;
   if (!sensor_frame_is_finite(frame)) {
     state.valid = false;
     return;

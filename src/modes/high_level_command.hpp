@@ -6,6 +6,8 @@
 #include <array>
 #include <cstdint>
 
+#include "core/joint_layout.hpp"
+
 namespace cerebellum {
 
 // mode ids of the CyberDog2 high-level interface
@@ -109,11 +111,8 @@ struct HighLevelStatus {
   int order_process_bar = 0;  // percent
   SwitchStatus switch_status = SwitchStatus::Done;
   int ori_error = 0;
-  int footpos_error = 0;  // bit 3 * leg + axis
-  std::array<std::uint32_t, 12> motor_error{};
+  int footpos_error = 0;                     // bit 3 * leg + axis
+  JointArray<std::uint32_t> motor_faults{};  // MotorFault bits per motor, as the drivers report them
 };
-
-// a healthy running motor: mode bits 30..31 = 2 (motor mode), no error bits
-inline constexpr std::uint32_t kMotorHealthy = 0x80000000u;
 
 }  // namespace cerebellum

@@ -110,7 +110,31 @@ void HighLevelMachine::switch_to(Mode& mode, const RobotState& state, const High
   mode.enter(state, command);
 }
 
+void HighLevelMachine::observe_health(const HealthVerdict& verdict) { health_ = verdict; }
+
+void HighLevelMachine::protect(const RobotState& state) {
+  // the client's sequence is dropped; what arrives while protected is refused in apply()
+  queue_.clear();
+  applied_generation_ = queue_.generation();
+  const ModeId target = health_.protection == Protection::Stopped ? ModeId::Off : ModeId::PureDamper;
+  if (current_->id() == target || (target == ModeId::PureDamper && current_->id() == ModeId::Off)) return;
+  Mode* mode = mode_for(static_cast<int>(target));
+  if (mode == nullptr) return;
+  HighLevelCommand command;
+  command.mode = static_cast<int>(target);
+  switch_to(*mode, state, command);
+}
+
 const char* HighLevelMachine::protection_refusal(ModeId target) const {
+  if (health_.protecting()) {
+    if (health_.causes & (kHealthMotorError | kHealthMotorWarning)) {
+      return "motor error or warning: commands are ignored until it clears";
+    }
+    if (health_.causes & (kHealthBatteryCritical | kHealthBatteryReading)) {
+      return "battery critically low: commands are ignored until it is charged";
+    }
+    return "sensor fault (IMU or state estimate): commands are ignored until it clears";
+  }
   const bool protected_stop = orientation_error_ || foot_position_error_ != 0;
   if (protected_stop && target != ModeId::RecoveryStand && target != ModeId::Off && target != ModeId::PureDamper) {
     return orientation_error_ ? "orientation error: only a recovery stand clears it"
@@ -207,6 +231,7 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
       switch_to(*damper, state, damp);
     }
   }
+  if (health_.protecting()) protect(state);
   // a refused entry leaves the queue as if it had never been sent (it neither waits out its
   // duration nor leaves a hold behind); what follows it is applied at once
   for (std::size_t attempt = 0; queue_.generation() != applied_generation_; ++attempt) {
@@ -238,7 +263,8 @@ void HighLevelMachine::update_status(const RobotState& state) {
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     if (state.contact[leg] > 0.5) status_.contact |= 1 << leg;
   }
-  status_.motor_error.fill(kMotorHealthy);
+  status_.motor_faults = state.motor_faults;
+  const bool protection_stopped = health_.protection == Protection::Stopped;
   if (handed_over_) {
     // the MC commands nothing: no gait, no progress, no protective stop of its own; the body's
     // orientation is still watched so that a client sees a robot upside down
@@ -247,7 +273,10 @@ void HighLevelMachine::update_status(const RobotState& state) {
     status_.order_process_bar = 100;
     status_.ori_error = orientation_error(state) ? 1 : 0;
     status_.footpos_error = 0;
-    status_.switch_status = banned_ ? SwitchStatus::BanTransition : SwitchStatus::Done;
+    status_.switch_status = protection_stopped     ? SwitchStatus::EmergencyStop
+                            : health_.protecting() ? SwitchStatus::HighDamping
+                            : banned_              ? SwitchStatus::BanTransition
+                                                   : SwitchStatus::Done;
     return;
   }
   status_.mode = static_cast<int>(current_->id());
@@ -255,7 +284,9 @@ void HighLevelMachine::update_status(const RobotState& state) {
   status_.order_process_bar = current_->progress_percent();
   status_.ori_error = orientation_error_ ? 1 : 0;
   status_.footpos_error = foot_position_error_;
-  status_.switch_status = orientation_error_                 ? SwitchStatus::EmergencyStop
+  status_.switch_status = protection_stopped                 ? SwitchStatus::EmergencyStop
+                          : health_.protecting()             ? SwitchStatus::HighDamping
+                          : orientation_error_               ? SwitchStatus::EmergencyStop
                           : foot_position_error_ != 0        ? SwitchStatus::HighDamping
                           : current_->damping_protection()   ? SwitchStatus::HighDamping
                           : banned_                          ? SwitchStatus::BanTransition

@@ -55,6 +55,9 @@ class HighLevelMachine final : public OwnBehaviour {
 
   // loop thread
   void compute(const RobotState& state, JointCommand& command) override;
+  // protected: the robot lies down (PureDamper), the motors go off once the guard stops them
+  // (Off); client commands are refused until every cause has cleared
+  void observe_health(const HealthVerdict& verdict) override;
   // the running mode's plan
   ContactPlan contact_plan() const override;
   bool allows_low_level_latch() const override;
@@ -90,6 +93,8 @@ class HighLevelMachine final : public OwnBehaviour {
   void watch_body(const RobotState& state);
   // why a command is refused while the robot is protected or lifted, or nullptr
   const char* protection_refusal(ModeId target) const;
+  // the health protection's mode: PureDamper while it damps, Off once it stopped the motors
+  void protect(const RobotState& state);
 
   CommandQueue queue_;
   SpscRing<TimedCommand, 64> inbox_;
@@ -109,6 +114,7 @@ class HighLevelMachine final : public OwnBehaviour {
   HighLevelCommand resume_command_;   // where a lifted robot goes once set down
   bool orientation_error_ = false;    // latched until a recovery stand starts
   int foot_position_error_ = 0;       // footpos_error bits, latched likewise
+  HealthVerdict health_;              // the health protection of this tick
   SpscRing<RefusalNote, 16> refusals_;
   std::optional<HighLevelSource> holder_;
   double holder_last_s_ = 0.0;

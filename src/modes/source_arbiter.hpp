@@ -41,6 +41,8 @@ class SourceArbiter final : public MotionController {
   explicit SourceArbiter(OwnBehaviour& own);
   void add_low_level_source(LowLevelSource& source);
   void compute(const RobotState& state, JointCommand& command) override;
+  // the MC's own behaviour reports the protection whoever holds the robot
+  void observe_health(const HealthVerdict& verdict) override { own_.observe_health(verdict); }
   // the plan of whoever computed the command: the latched source or the MC's own behaviour
   ContactPlan contact_plan() const override;
 

@@ -6,8 +6,19 @@
 
 namespace cerebellum {
 
-SafetyReport guard_command(const RobotState& state, JointCommand& command, const GuardLimits& limits) {
+SafetyReport guard_command(const RobotState& state, JointCommand& command, const GuardLimits& limits,
+                           Protection protection) {
   SafetyReport report;
+  if (protection == Protection::Stopped) {
+    report.flags |= kGuardHealthStopped;
+    command = passive_command();
+    return report;
+  }
+  if (protection == Protection::Damping) {
+    report.flags |= kGuardHealthDamping;
+    command = damping_command(limits.damping_kd);
+    return report;
+  }
   if (!state.valid) {
     report.flags |= kGuardInvalidState;
     command = damping_command(limits.damping_kd);

@@ -5,6 +5,7 @@
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "safety/command_limits.hpp"
+#include "safety/health_monitor.hpp"
 #include "safety/safety_report.hpp"
 
 namespace cerebellum {
@@ -12,10 +13,14 @@ namespace cerebellum {
 struct GuardLimits {
   CommandLimits command;
   double damping_kd = 4.0;  // kd of the replacement command
+  HealthLimits health;
 };
 
-// clamps each field into its range (one GuardFlag per cause) or replaces the command with joint
-// damping when the state is not valid or a number in the command is NaN/Inf
-SafetyReport guard_command(const RobotState& state, JointCommand& command, const GuardLimits& limits);
+// clamps each field into its range (one GuardFlag per cause) or replaces the command: with joint
+// damping when the health protection damps, the state is not valid or a number in the command is
+// NaN/Inf; with the passive command once the protection has stopped the motors. Whoever wrote the
+// command (the MC's modes or a low-level client), the protection has the last word.
+SafetyReport guard_command(const RobotState& state, JointCommand& command, const GuardLimits& limits,
+                           Protection protection = Protection::None);
 
 }  // namespace cerebellum

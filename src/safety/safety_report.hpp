@@ -15,6 +15,8 @@ enum GuardFlag : std::uint32_t {
   kGuardClampedPosition = 1u << 3,
   kGuardNonFiniteCommand = 1u << 4,  // command replaced by damping
   kGuardInvalidState = 1u << 5,      // state not trusted: command replaced by damping
+  kGuardHealthDamping = 1u << 6,     // the health protection damps: command replaced by damping
+  kGuardHealthStopped = 1u << 7,     // the health protection stopped the motors: passive command
 };
 
 struct SafetyReport {
@@ -24,7 +26,9 @@ struct SafetyReport {
   bool lifted = false;             // picked up (the lift watch of a standing mode)
   bool landed = false;             // set down again (the lift watch while lifted)
 
-  bool replaced() const { return (flags & (kGuardNonFiniteCommand | kGuardInvalidState)) != 0; }
+  bool replaced() const {
+    return (flags & (kGuardNonFiniteCommand | kGuardInvalidState | kGuardHealthDamping | kGuardHealthStopped)) != 0;
+  }
   // the body is in a state the machine must stop for
   bool body_fault() const { return orientation_error || footpos_error != 0; }
 };

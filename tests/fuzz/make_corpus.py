@@ -106,7 +106,15 @@ write("shm_command", "absurd", legs(1e30, -1e30, 1e9, -5.0, 1e6))
 write("sim_command_text", "push", "push 10 0 0 1")
 write("sim_command_text", "too_strong", "push 900 0 0 1")
 write("sim_command_text", "nan", "push nan 0 0 1")
-write("sim_command_text", "unknown", "fault motor 3 disconnected")
+write("sim_command_text", "unknown", "teleport 1 2 3")
+write("sim_command_text", "fault_motor", "fault motor FR_knee disconnected for 2")
+write("sim_command_text", "fault_battery", "fault battery soc 15")
+write("sim_command_text", "fault_bad", "fault motor 12 derated 1.5")
+write("fault_scenario", "scenario", "faults:\n  - at_s: 5\n    fault: motor FR_knee disconnected\n    duration_s: 4\n"
+      "  - {at_s: 12, fault: battery soc 4}\n  - {at_s: 20, fault: clear}\n")
+write("fault_scenario", "duplicate_key", "faults:\n  - {at_s: 1, fault: imu stuck, at_s: 2}\n")
+write("fault_scenario", "bad_fault", "faults:\n  - {at_s: 1, fault: wheel 3 flat}\n")
+write("fault_scenario", "not_a_list", "faults: {at_s: 1}\n")
 
 # configuration files: the shipped ones and broken ones
 for name in ("cerebellum.yaml", "demo.yaml", "robot-network.yaml"):

@@ -235,7 +235,7 @@ TEST(HighLevelMachine, ContactBitsComeFromTheEstimate) {
   m.state.contact = {1.0, 0.0, 1.0, 1.0};
   m.tick();
   EXPECT_EQ(m.machine.status().contact, 0b1101);
-  for (std::uint32_t e : m.machine.status().motor_error) EXPECT_EQ(e, kMotorHealthy);
+  for (std::uint32_t e : m.machine.status().motor_faults) EXPECT_EQ(e, kMotorOk);
 }
 
 TEST(HighLevelMachine, ARefusedCommandLeavesTheQueueAsIfItHadNeverBeenSent) {
@@ -307,7 +307,7 @@ TEST(HighLevelMachine, WhileALowLevelClientHoldsTheRobotTheResponseIsLiveAndNewC
   EXPECT_EQ(m.machine.status().contact, 0b0011);
   EXPECT_EQ(m.machine.status().ori_error, 1);
   EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::Done);
-  for (std::uint32_t e : m.machine.status().motor_error) EXPECT_EQ(e, kMotorHealthy);
+  for (std::uint32_t e : m.machine.status().motor_faults) EXPECT_EQ(e, kMotorOk);
 
   // a new command is refused (BAN_TRANS) and counted, with the holder named for the log
   m.machine.submit(cmd(ModeId::RecoveryStand, 0, 1), m.state.time_s);

@@ -82,3 +82,42 @@ TEST(CommandGuard, InvalidStateReplacesTheCommandWithDamping) {
 
 }  // namespace
 }  // namespace cerebellum
+
+namespace cerebellum {
+namespace {
+
+JointCommand stiff_command() {
+  JointCommand command;
+  command.kp.fill(60.0);
+  command.kd.fill(2.0);
+  command.tau_ff.fill(3.0);
+  return command;
+}
+
+TEST(CommandGuard, TheHealthProtectionDampsWhateverCommandCame) {
+  JointCommand command = stiff_command();
+  GuardLimits limits;
+  limits.damping_kd = 4.0;
+  const SafetyReport report = guard_command(valid_state(), command, limits, Protection::Damping);
+  EXPECT_EQ(report.flags, kGuardHealthDamping);
+  EXPECT_TRUE(report.replaced());
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    EXPECT_EQ(command.kp[i], 0.0);
+    EXPECT_EQ(command.kd[i], 4.0);
+    EXPECT_EQ(command.tau_ff[i], 0.0);
+  }
+}
+
+TEST(CommandGuard, AStoppedProtectionSwitchesTheMotorsOff) {
+  JointCommand command = stiff_command();
+  const SafetyReport report = guard_command(valid_state(), command, GuardLimits{}, Protection::Stopped);
+  EXPECT_EQ(report.flags, kGuardHealthStopped);
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    EXPECT_EQ(command.kp[i], 0.0);
+    EXPECT_EQ(command.kd[i], 0.0);
+    EXPECT_EQ(command.tau_ff[i], 0.0);
+  }
+}
+
+}  // namespace
+}  // namespace cerebellum

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "file_send_lcmt.hpp"
+#include "io/common/motor_error_word.hpp"
 #include "io/wire_floats.hpp"
 
 namespace cerebellum {
@@ -92,8 +93,8 @@ robot_control_response_lcmt make_response(const HighLevelStatus& status) {
   message.switch_status = static_cast<std::int8_t>(status.switch_status);
   message.ori_error = static_cast<std::int8_t>(status.ori_error);
   message.footpos_error = static_cast<std::int16_t>(status.footpos_error);
-  for (std::size_t i = 0; i < status.motor_error.size(); ++i) {
-    message.motor_error[i] = static_cast<std::int32_t>(status.motor_error[i]);
+  for (std::size_t i = 0; i < status.motor_faults.size(); ++i) {
+    message.motor_error[i] = static_cast<std::int32_t>(motor_error_word(status.motor_faults[i]));
   }
   return message;
 }

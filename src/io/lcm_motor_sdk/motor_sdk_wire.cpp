@@ -4,14 +4,10 @@
 #include <cmath>
 #include <limits>
 
+#include "io/common/motor_error_word.hpp"
+
 namespace cerebellum {
 namespace {
-
-constexpr std::uint32_t kMotorModeRunning = 2u << 30;
-constexpr std::uint32_t kWindingTemperatureWarning = 1u << 24;
-constexpr std::uint32_t kWindingOverTemperature = 1u << 1;
-constexpr double kWarningTemperatureC = 82.0;
-constexpr double kShutdownTemperatureC = 87.0;
 
 // deg C to the wire's 0.1 deg C steps
 std::int16_t tenths_of_degree(double temperature_c) {
@@ -50,13 +46,6 @@ motor_ctrl_lcmt encode_motor_ctrl(const JointCommand& sdk_command) {
   return message;
 }
 
-std::uint32_t motor_flags(double temperature_c) {
-  std::uint32_t flags = kMotorModeRunning;
-  if (temperature_c >= kWarningTemperatureC) flags |= kWindingTemperatureWarning;
-  if (temperature_c >= kShutdownTemperatureC) flags |= kWindingOverTemperature;
-  return flags;
-}
-
 spi_data_t make_spi_data(const RobotState& state) {
   spi_data_t message{};
   const JointArray<double> q = sdk_to_wire(state.q);
@@ -78,7 +67,7 @@ spi_data_t make_spi_data(const RobotState& state) {
     message.tmp_knee[leg] = tenths_of_degree(state.temperature_c[knee]);
   }
   for (std::size_t i = 0; i < kNumJoints; ++i) {
-    message.flags[i] = static_cast<std::int32_t>(motor_flags(state.temperature_c[i]));
+    message.flags[i] = static_cast<std::int32_t>(motor_error_word(state.motor_faults[i]));
   }
   return message;
 }

@@ -22,10 +22,7 @@ WireDecode decode_motor_ctrl(const void* data, std::size_t size, JointCommand& s
 // the wire message of an SDK-convention command (what a client sends)
 motor_ctrl_lcmt encode_motor_ctrl(const JointCommand& sdk_command);
 
-// motor_error / spi flags of one motor: 0x80000000 (motor mode, healthy) plus the winding
-// temperature warning (bit 24, >= 82 deg C) and over-temperature error (bit 1, >= 87 deg C)
-std::uint32_t motor_flags(double temperature_c);
-
+// spi_data.flags carry each motor's MotorFault bits as motor_error words (io/common)
 spi_data_t make_spi_data(const RobotState& state);
 motor_ctrl_state_lcmt make_motor_ctrl_state(const MotorSdkStatus& status);
 

@@ -38,11 +38,17 @@ SimCommand parse_sim_command(const std::string& text) {
   std::vector<std::string> words;
   for (std::string word; in >> word;) words.push_back(word);
   if (words.empty()) {
-    command.error = "empty command (accepted: push FX FY FZ DURATION_S)";
+    command.error = "empty command (accepted: push FX FY FZ DURATION_S, fault ...)";
+    return command;
+  }
+  if (words[0] == "fault") {
+    FaultParse parsed = parse_fault(std::vector<std::string>(words.begin() + 1, words.end()));
+    command.fault = parsed.request;
+    command.error = parsed.error;
     return command;
   }
   if (words[0] != "push") {
-    command.error = "unknown command '" + words[0].substr(0, 32) + "' (accepted: push FX FY FZ DURATION_S)";
+    command.error = "unknown command '" + words[0].substr(0, 32) + "' (accepted: push FX FY FZ DURATION_S, fault ...)";
     return command;
   }
   if (words.size() != 5) {
@@ -79,5 +85,7 @@ std::string push_command_text(const ForcePulse& pulse) {
   return "push " + format_number(pulse.force_n[0]) + " " + format_number(pulse.force_n[1]) + " " +
          format_number(pulse.force_n[2]) + " " + format_number(pulse.duration_s);
 }
+
+std::string fault_command_text(const FaultRequest& request) { return "fault " + fault_text(request); }
 
 }  // namespace cerebellum

@@ -19,8 +19,10 @@ constexpr std::size_t kPacketMaxBytes = 8 + 8 + 4 + kSimCommandTextMaxBytes + 1;
 
 }  // namespace
 
-SimControlAdapter::SimControlAdapter(Simulation& simulation, const std::string& url, std::FILE* log)
+SimControlAdapter::SimControlAdapter(Simulation& simulation, FaultInjectingBackend* faults, const std::string& url,
+                                     std::FILE* log)
     : simulation_(simulation),
+      faults_(faults),
       log_(log),
       lcm_(open_lcm_url(url, kInterfaceName)),
       log_lines_(log, kInterfaceName, "sim_command results", kLinesPerSecond) {
@@ -60,12 +62,21 @@ void SimControlAdapter::on_command(const lcm::ReceiveBuffer* buffer, const std::
     return;
   }
   const SimCommand command = parse_sim_command(message.command);
-  if (!command.push) {
+  const auto refuse = [&](const std::string& why) {
     refused_.fetch_add(1);
-    log_lines_.line(wall_seconds(), "refused: " + command.error);
-    answer(message.request_id, false, command.error);
+    log_lines_.line(wall_seconds(), "refused: " + why);
+    answer(message.request_id, false, why);
+  };
+  if (command.fault) {
+    if (faults_ == nullptr) return refuse("this robot has no fault injector");
+    if (const std::string why = faults_->request(*command.fault); !why.empty()) return refuse(why);
+    taken_.fetch_add(1);
+    const std::string done = "taken: " + fault_command_text(*command.fault);
+    log_lines_.line(wall_seconds(), done);
+    answer(message.request_id, true, done);
     return;
   }
+  if (!command.push) return refuse(command.error);
   simulation_.request_force_pulse(*command.push);
   taken_.fetch_add(1);
   const std::string done = "taken: " + push_command_text(*command.push) + " (N, N, N, s) on the trunk";

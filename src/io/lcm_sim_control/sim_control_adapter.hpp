@@ -11,6 +11,7 @@
 #include <memory>
 #include <string>
 
+#include "backend/fault_injecting_backend.hpp"
 #include "backend/simulation.hpp"
 #include "io/common/adapter_thread.hpp"
 #include "io/common/rate_limited_log.hpp"
@@ -33,8 +34,9 @@ struct SimControlCounters {
 
 class SimControlAdapter {
  public:
+  // faults: the robot's fault injector, or nullptr (fault commands are then refused);
   // throws std::runtime_error naming a url LCM cannot open
-  SimControlAdapter(Simulation& simulation, const std::string& url, std::FILE* log);
+  SimControlAdapter(Simulation& simulation, FaultInjectingBackend* faults, const std::string& url, std::FILE* log);
   ~SimControlAdapter();
   SimControlAdapter(const SimControlAdapter&) = delete;
   SimControlAdapter& operator=(const SimControlAdapter&) = delete;
@@ -49,6 +51,7 @@ class SimControlAdapter {
   void answer(std::int64_t request_id, bool taken, const std::string& reason);
 
   Simulation& simulation_;
+  FaultInjectingBackend* faults_;
   std::FILE* log_;
   std::unique_ptr<lcm::LCM> lcm_;
   RateLimitedLog log_lines_;

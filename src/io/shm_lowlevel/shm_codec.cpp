@@ -24,21 +24,34 @@ const joint_control_t& joint_in(const leg_control_t& leg, std::size_t joint) {
 
 }  // namespace
 
-std::int32_t shm_joint_state_flags(double temperature_c) {
-  const double encoded = std::isfinite(temperature_c) ? std::clamp(std::round(temperature_c) + 40.0, 0.0, 255.0) : 0.0;
-  const auto temperature_byte = static_cast<std::uint32_t>(encoded);
-  const std::uint32_t flags = JOINT_STATE_ENABLED | (temperature_byte << JOINT_STATE_TEMPERATURE_SHIFT) |
-                              (static_cast<std::uint32_t>(kShmBusVoltageV) << JOINT_STATE_BUS_VOLTAGE_SHIFT);
+namespace {
+
+// a whole number clamped into one byte; 0 for NaN
+std::uint32_t byte_of(double value) {
+  return std::isfinite(value) ? static_cast<std::uint32_t>(std::clamp(std::round(value), 0.0, 255.0)) : 0u;
+}
+
+}  // namespace
+
+std::int32_t shm_joint_state_flags(double temperature_c, std::uint32_t motor_faults, double bus_voltage_v) {
+  std::uint32_t flags = (byte_of(temperature_c + JOINT_STATE_TEMPERATURE_OFFSET_C) << JOINT_STATE_TEMPERATURE_SHIFT) |
+                        (byte_of(bus_voltage_v) << JOINT_STATE_BUS_VOLTAGE_SHIFT);
+  if ((motor_faults & kMotorErrorBits) == 0) flags |= JOINT_STATE_ENABLED;
+  if (motor_faults & kMotorOverVoltage) flags |= JOINT_STATE_OVER_VOLTAGE;
+  if (motor_faults & kMotorOverCurrent) flags |= JOINT_STATE_OVER_CURRENT;
+  if (motor_faults & kMotorOverTemperature) flags |= JOINT_STATE_OVER_TEMPERATURE;
+  if (motor_faults & kMotorEncoderLost) flags |= JOINT_STATE_ENCODER_FAULT;
   return static_cast<std::int32_t>(flags);
 }
 
 void encode_shm_legs(const SensorFrame& frame, leg_state_t (&legs)[kNumLegs]) {
+  const double bus_voltage_v = frame.battery.present ? frame.battery.voltage_v : kShmNominalBusVoltageV;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     legs[leg].foot = joint_state_t{};
     for (std::size_t joint = 0; joint < kJointsPerLeg; ++joint) {
       const std::size_t i = joint_index(leg, joint);
       joint_state_t& out = joint_in(legs[leg], joint);
-      out.flags = shm_joint_state_flags(frame.temperature_c[i]);
+      out.flags = shm_joint_state_flags(frame.temperature_c[i], frame.motor_faults[i], bus_voltage_v);
       out.p = static_cast<float>(frame.q[i]);
       out.v = static_cast<float>(frame.qd[i]);
       out.t = static_cast<float>(frame.tau[i]);

@@ -12,10 +12,13 @@
 
 namespace cerebellum {
 
-inline constexpr std::int32_t kShmBusVoltageV = 24;
+// the bus voltage reported by a robot without a battery reading: the pack's nominal 24 V
+inline constexpr double kShmNominalBusVoltageV = 24.0;
 
-// bit0 enabled, bits 8..15 temperature + 40 (clamped to -40..215 deg C), bits 16..23 bus voltage
-std::int32_t shm_joint_state_flags(double temperature_c);
+// bit0 enabled (cleared while the motor's driver is stopped by an error), bits 1..5 the faults
+// lowlevel.h names (MotorFault bits without an own flag show only as "not enabled"), bits 8..15
+// temperature + 40 (clamped to -40..215 deg C), bits 16..23 bus voltage (whole volts, 0..255)
+std::int32_t shm_joint_state_flags(double temperature_c, std::uint32_t motor_faults, double bus_voltage_v);
 
 // state.legs of one frame
 void encode_shm_legs(const SensorFrame& frame, leg_state_t (&legs)[kNumLegs]);

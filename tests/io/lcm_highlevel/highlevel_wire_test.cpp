@@ -117,8 +117,7 @@ TEST(HighLevelWire, ResponseBytesFollowTheReferenceLayout) {
   status.switch_status = SwitchStatus::BanTransition;
   status.ori_error = 1;
   status.footpos_error = 0x801;
-  status.motor_error.fill(kMotorHealthy);
-  status.motor_error[4] = kMotorHealthy | (1u << 24);
+  status.motor_faults[4] = kMotorTemperatureWarning;
   const robot_control_response_lcmt message = make_response(status);
   Bytes encoded(64);
   ASSERT_EQ(message.encode(encoded.data(), 0, 64), 64);

@@ -91,6 +91,9 @@ TEST(MotorSdkWire, SpiDataCarriesWireJointsTenthsOfDegreesAndMotorFlags) {
   state.temperature_c[4] = 36.46;
   state.temperature_c[7] = 83.0;
   state.temperature_c[10] = 88.0;
+  state.motor_faults[7] = kMotorTemperatureWarning;
+  state.motor_faults[10] = kMotorTemperatureWarning | kMotorOverTemperature;
+  state.motor_faults[11] = kMotorDisconnected | kMotorEncoderLost;
   const spi_data_t message = make_spi_data(state);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     EXPECT_FLOAT_EQ(message.q_abad[leg], float(state.q[3 * leg]));
@@ -106,6 +109,7 @@ TEST(MotorSdkWire, SpiDataCarriesWireJointsTenthsOfDegreesAndMotorFlags) {
   EXPECT_EQ(static_cast<std::uint32_t>(message.flags[0]), 0x80000000u);
   EXPECT_EQ(static_cast<std::uint32_t>(message.flags[7]), 0x81000000u);   // warning bit 24
   EXPECT_EQ(static_cast<std::uint32_t>(message.flags[10]), 0x81000002u);  // and error bit 1
+  EXPECT_EQ(static_cast<std::uint32_t>(message.flags[11]), 0x80000101u);  // bits 0 and 8
 }
 
 TEST(MotorSdkWire, MotorCtrlStateCarriesErrFlagAndInterval) {

@@ -35,7 +35,7 @@ class SimControlLockstep : public ::testing::Test {
   SimControlLockstep()
       : mc_(make_simulated_mc(config_)),
         log_(std::tmpfile()),
-        adapter_(mc_.simulation(), config_.highlevel.odometry_url, log_),
+        adapter_(mc_.simulation(), mc_.faults(), config_.highlevel.odometry_url, log_),
         peer_(config_.highlevel.odometry_url) {
     peer_.subscribe(kSimCommandResultChannel, &SimControlLockstep::on_result, this);
   }

@@ -12,13 +12,13 @@ namespace {
 
 TEST(ShmCodec, JointStateFlagsPackEnableTemperatureAndVoltage) {
   // bit0 enabled; byte 1: 25 deg C + 40 = 65 = 0x41; byte 2: 24 V = 0x18
-  EXPECT_EQ(shm_joint_state_flags(25.0), 0x00184101);
-  EXPECT_EQ(shm_joint_state_flags(24.6), 0x00184101);  // rounded to whole degrees
-  EXPECT_EQ(shm_joint_state_flags(-40.0), 0x00180001);
-  EXPECT_EQ(shm_joint_state_flags(-60.0), 0x00180001);  // below the range: clamped
-  EXPECT_EQ(shm_joint_state_flags(215.0), 0x0018FF01);
-  EXPECT_EQ(shm_joint_state_flags(400.0), 0x0018FF01);
-  EXPECT_EQ(shm_joint_state_flags(std::nan("")), 0x00180001);
+  EXPECT_EQ(shm_joint_state_flags(25.0, kMotorOk, 24.0), 0x00184101);
+  EXPECT_EQ(shm_joint_state_flags(24.6, kMotorOk, 24.0), 0x00184101);  // rounded to whole degrees
+  EXPECT_EQ(shm_joint_state_flags(-40.0, kMotorOk, 24.0), 0x00180001);
+  EXPECT_EQ(shm_joint_state_flags(-60.0, kMotorOk, 24.0), 0x00180001);  // below the range: clamped
+  EXPECT_EQ(shm_joint_state_flags(215.0, kMotorOk, 24.0), 0x0018FF01);
+  EXPECT_EQ(shm_joint_state_flags(400.0, kMotorOk, 24.0), 0x0018FF01);
+  EXPECT_EQ(shm_joint_state_flags(std::nan(""), kMotorOk, 24.0), 0x00180001);
 }
 
 SensorFrame numbered_frame() {

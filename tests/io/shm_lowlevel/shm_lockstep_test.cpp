@@ -194,7 +194,9 @@ TEST_F(ShmLockstep, StateFlagsAndContentFollowTheHandshake) {
       EXPECT_EQ(joints[j].v, static_cast<float>(before.qd[i])) << i;
       EXPECT_EQ(joints[j].t, static_cast<float>(before.tau[i])) << i;
       const int temperature_byte = static_cast<int>(std::lround(before.temperature_c[i])) + 40;
-      EXPECT_EQ(joints[j].flags, 1 + 256 * temperature_byte + 65536 * 24) << i;
+      // bus voltage: the simulated battery's, in whole volts
+      const int volts = static_cast<int>(std::lround(before.battery.voltage_v));
+      EXPECT_EQ(joints[j].flags, 1 + 256 * temperature_byte + 65536 * volts) << i;
     }
     EXPECT_EQ(state.legs[leg].foot.flags, 0);
     EXPECT_EQ(state.legs[leg].foot.p, 0.0f);

@@ -1,0 +1,101 @@
+#include "app/fault_command.hpp"
+
+#include <cmath>
+#include <cstdio>
+#include <stdexcept>
+
+#include "app/sim_command_client.hpp"
+#include "backend/fault_request.hpp"
+#include "io/lcm_common/lcm_url.hpp"
+#include "io/lcm_highlevel/lcm_highlevel_config.hpp"
+#include "io/lcm_sim_control/sim_command_text.hpp"
+
+namespace cerebellum {
+namespace {
+
+std::string usage() {
+  return "usage: cerebellum fault COMPONENT ... [for SECONDS] [--url URL] [--timeout S]\n"
+         "Injects a fault into the running simulation (or clears one); the MC answers it as the robot\n"
+         "would (docs/safety.md). Exit status 0 when the simulation took it.\n"
+         "  motor N disconnected | over_temperature | driver_fault | under_voltage | over_voltage |\n"
+         "          over_current | overload | encoder_lost    the driver reports it and stops its motor\n"
+         "  motor N stuck | derated FRACTION                  a seized joint; a motor with less torque\n"
+         "  imu bias RAD_S | stuck | dropout | nan\n"
+         "  battery soc PERCENT | drain FACTOR | capacity AH | sag VOLTS\n"
+         "  foot LEG slippery [MU]                           ground friction under one foot (default 0.05)\n"
+         "  clear [motor N | imu | battery | foot LEG]        everything, or one component\n"
+         "  N: 0..11 in SDK order or a name such as FR_knee; LEG: 0..3 or FR, FL, RR, RL\n"
+         "  for SECONDS   the fault clears itself after this much simulated time\n"
+         "  --url URL     the simulation's odometry URL (default " +
+         HighLevelLcmConfig{}.odometry_url +
+         ")\n"
+         "  --timeout S   wall seconds to wait for the simulation's answer (default 2)\n"
+         "Examples: cerebellum fault motor 3 disconnected;  cerebellum fault battery soc 15;\n"
+         "          cerebellum fault imu stuck for 2;  cerebellum fault clear\n";
+}
+
+struct FaultOptions {
+  FaultRequest request;
+  std::string url = HighLevelLcmConfig{}.odometry_url;
+  double timeout_s = 2.0;
+  bool help = false;
+};
+
+FaultOptions parse(const std::vector<std::string>& args) {
+  FaultOptions options;
+  std::vector<std::string> words;
+  for (std::size_t i = 0; i < args.size(); ++i) {
+    const std::string& arg = args[i];
+    const auto value = [&]() -> const std::string& {
+      if (i + 1 >= args.size()) throw std::invalid_argument(arg + " needs a value");
+      return args[++i];
+    };
+    if (arg == "--help" || arg == "-h") {
+      options.help = true;
+    } else if (arg == "--url") {
+      options.url = value();
+      if (const std::string problem = lcm_url_problem(options.url); !problem.empty()) {
+        throw std::invalid_argument("--url: " + problem);
+      }
+    } else if (arg == "--timeout") {
+      const std::string& text = value();
+      try {
+        options.timeout_s = std::stod(text);
+      } catch (const std::exception&) {
+        options.timeout_s = -1.0;
+      }
+      if (!(options.timeout_s > 0.0 && options.timeout_s <= 60.0)) {
+        throw std::invalid_argument("--timeout must be in (0, 60] s, got " + text);
+      }
+    } else if (arg.size() > 2 && arg.compare(0, 2, "--") == 0) {
+      throw std::invalid_argument("unknown option '" + arg + "' (accepted: --url, --timeout)");
+    } else {
+      words.push_back(arg);
+    }
+  }
+  if (options.help) return options;
+  // the simulation's own grammar, applied before sending
+  FaultParse parsed = parse_fault(words);
+  if (!parsed.request) throw std::invalid_argument(parsed.error);
+  options.request = *parsed.request;
+  return options;
+}
+
+}  // namespace
+
+int run_fault_command(const std::vector<std::string>& args) {
+  FaultOptions options;
+  try {
+    options = parse(args);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "cerebellum fault: %s\n%s", e.what(), usage().c_str());
+    return 2;
+  }
+  if (options.help) {
+    std::fputs(usage().c_str(), stdout);
+    return 0;
+  }
+  return send_sim_command(options.url, fault_command_text(options.request), options.timeout_s, "fault");
+}
+
+}  // namespace cerebellum

@@ -1,0 +1,52 @@
+#include "app/sim_command_client.hpp"
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <chrono>
+#include <cstdio>
+#include <optional>
+#include <random>
+
+#include "io/lcm_common/lcm_url.hpp"
+#include "io/lcm_sim_control/sim_control_adapter.hpp"
+#include "sim_command_lcmt.hpp"
+#include "sim_command_result_lcmt.hpp"
+
+namespace cerebellum {
+
+int send_sim_command(const std::string& url, const std::string& text, double timeout_s, const char* verb) {
+  try {
+    std::unique_ptr<lcm::LCM> lcm = open_lcm_url(url, verb);
+    std::optional<sim_command_result_lcmt> answer;
+    std::random_device entropy;
+    const std::int64_t request_id = (static_cast<std::int64_t>(entropy()) << 31) ^ entropy();
+    struct Handler {
+      std::int64_t id;
+      std::optional<sim_command_result_lcmt>* answer;
+      void on_result(const lcm::ReceiveBuffer*, const std::string&, const sim_command_result_lcmt* result) {
+        if (result->request_id == id) *answer = *result;
+      }
+    } handler{request_id, &answer};
+    lcm->subscribe(kSimCommandResultChannel, &Handler::on_result, &handler);
+    sim_command_lcmt command;
+    command.request_id = request_id;
+    command.command = text;
+    lcm->publish(kSimCommandChannel, &command);
+    const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
+    while (!answer && std::chrono::steady_clock::now() < deadline) handle_pending(*lcm, 50);
+    if (!answer) {
+      std::fprintf(stderr,
+                   "cerebellum %s: no simulation answered on %s within %g s (is `cerebellum sim` running, in "
+                   "this network namespace?)\n",
+                   verb, url.c_str(), timeout_s);
+      return 1;
+    }
+    std::printf("%s\n", answer->reason.c_str());
+    return answer->result == 0 ? 0 : 1;
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cerebellum %s: %s\n", verb, e.what());
+    return 1;
+  }
+}
+
+}  // namespace cerebellum

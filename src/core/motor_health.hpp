@@ -1,0 +1,37 @@
+// What the robot's power and motor drivers report about themselves, in the MC's own terms; the
+// interface adapters translate these bits into each wire format (motor_error, spi flags,
+// joint_state_t.flags).
+#pragma once
+
+#include <cstdint>
+
+namespace cerebellum {
+
+// per motor, one bit per condition its driver reports
+enum MotorFault : std::uint32_t {
+  kMotorOk = 0,
+  kMotorDisconnected = 1u << 0,     // no answer from the driver
+  kMotorOverTemperature = 1u << 1,  // coil at or above the shutdown temperature: the driver stops
+  kMotorDriverFault = 1u << 2,      // driver chip
+  kMotorUnderVoltage = 1u << 3,     // bus voltage below the driver's limit
+  kMotorOverVoltage = 1u << 4,
+  kMotorOverCurrent = 1u << 5,
+  kMotorEncoderLost = 1u << 6,  // the position sensor does not answer or is not calibrated
+  kMotorOverload = 1u << 7,
+  kMotorTemperatureWarning = 1u << 8,  // coil at or above the warning temperature (not an error)
+};
+
+inline constexpr std::uint32_t kMotorErrorBits = kMotorDisconnected | kMotorOverTemperature | kMotorDriverFault |
+                                                 kMotorUnderVoltage | kMotorOverVoltage | kMotorOverCurrent |
+                                                 kMotorEncoderLost | kMotorOverload;
+inline constexpr std::uint32_t kMotorWarningBits = kMotorTemperatureWarning;
+
+// what the battery management system reports
+struct BatteryReading {
+  bool present = false;  // false: the robot reports no battery (no battery protection)
+  double voltage_v = 0.0;
+  double current_a = 0.0;  // drawn from the pack (> 0 discharging)
+  double state_of_charge_percent = 100.0;
+};
+
+}  // namespace cerebellum

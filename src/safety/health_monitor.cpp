@@ -1,0 +1,77 @@
+#include "safety/health_monitor.hpp"
+
+#include <cmath>
+
+namespace cerebellum {
+
+HealthMonitor::HealthMonitor(const HealthLimits& limits) : limits_(limits) {}
+
+bool HealthMonitor::imu_stuck(const RobotState& state) {
+  // everything the estimator takes from the IMU; a live sensor never repeats it bit for bit
+  const std::array<double, 10> sample{
+      state.orientation.w(), state.orientation.x(), state.orientation.y(), state.orientation.z(), state.omega_body.x(),
+      state.omega_body.y(),  state.omega_body.z(),  state.accel_body.x(),  state.accel_body.y(),  state.accel_body.z()};
+  if (!have_sample_ || sample != imu_sample_) {
+    have_sample_ = true;
+    imu_sample_ = sample;
+    joints_ = state.q;
+    imu_still_since_s_ = state.time_s;
+    joints_moved_ = false;
+    return false;
+  }
+  // a resting robot may hold its joints still too: only a frozen IMU on a moving robot is stuck
+  if (state.q != joints_) joints_moved_ = true;
+  return joints_moved_ && state.time_s - imu_still_since_s_ >= limits_.imu_stuck_after_s - 1e-9;
+}
+
+HealthVerdict HealthMonitor::update(const RobotState& state) {
+  std::uint32_t causes = kHealthOk;
+  std::uint32_t faulty_motors = 0;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    const std::uint32_t faults = state.motor_faults[i];
+    if (faults & kMotorErrorBits) causes |= kHealthMotorError;
+    if (faults & kMotorWarningBits) causes |= kHealthMotorWarning;
+    if (faults & (kMotorErrorBits | kMotorWarningBits)) faulty_motors |= 1u << i;
+  }
+  const BatteryReading& battery = state.battery;
+  if (battery.present) {
+    if (!std::isfinite(battery.state_of_charge_percent) || !std::isfinite(battery.voltage_v)) {
+      causes |= kHealthBatteryReading;
+    } else if (battery.state_of_charge_percent <= limits_.battery_critical_percent) {
+      causes |= kHealthBatteryCritical;
+    }
+  }
+  if (state.valid) {
+    invalid_since_s_ = -1.0;
+    if (imu_stuck(state)) causes |= kHealthImuStuck;
+  } else {
+    if (invalid_since_s_ < 0.0) invalid_since_s_ = state.time_s;
+    if (state.time_s - invalid_since_s_ >= limits_.state_invalid_after_s - 1e-9) causes |= kHealthStateInvalid;
+  }
+
+  if (causes == kHealthOk) {
+    verdict_ = HealthVerdict{};
+    return verdict_;
+  }
+  if (!verdict_.protecting()) protected_since_s_ = state.time_s;
+  verdict_.causes = causes;
+  verdict_.faulty_motors = faulty_motors;
+  verdict_.protected_s = state.time_s - protected_since_s_;
+  verdict_.protection = verdict_.protected_s >= limits_.stop_after_s - 1e-9 ? Protection::Stopped : Protection::Damping;
+  return verdict_;
+}
+
+const char* health_cause_name(HealthCause cause) {
+  switch (cause) {
+    case kHealthOk: return "healthy";
+    case kHealthMotorError: return "motor error";
+    case kHealthMotorWarning: return "motor warning";
+    case kHealthBatteryCritical: return "battery critical";
+    case kHealthBatteryReading: return "battery reading not finite";
+    case kHealthImuStuck: return "IMU stuck";
+    case kHealthStateInvalid: return "state estimate invalid";
+  }
+  return "unknown";
+}
+
+}  // namespace cerebellum

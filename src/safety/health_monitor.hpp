@@ -1,0 +1,68 @@
+// The robot's own health and the protection it calls for, whoever commands the robot: any motor
+// error or warning, a battery at its critical level, an IMU that froze, or a state the estimator
+// cannot trust for longer than a glitch -> high damping (the robot slowly lies down), and after
+// 3 s of it the motors are switched off (emergency stop). Commands are ignored while it lasts;
+// the causes clear by themselves when their conditions do (cyberdog2-highlevel.md section 5).
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "core/robot_state.hpp"
+
+namespace cerebellum {
+
+enum class Protection { None, Damping, Stopped };
+
+// why the robot is protected, one bit per cause
+enum HealthCause : std::uint32_t {
+  kHealthOk = 0,
+  kHealthMotorError = 1u << 0,
+  kHealthMotorWarning = 1u << 1,
+  kHealthBatteryCritical = 1u << 2,  // state of charge at or below the critical level
+  kHealthBatteryReading = 1u << 3,   // the battery reports numbers that are not finite
+  kHealthImuStuck = 1u << 4,         // IMU samples bit-identical while the joints move
+  kHealthStateInvalid = 1u << 5,     // the estimator has not trusted its state for a while
+};
+
+struct HealthLimits {
+  double stop_after_s = 3.0;              // damping, then the motors off
+  double battery_critical_percent = 5.0;  // at or below: protection
+  double imu_stuck_after_s = 0.1;         // identical IMU samples for this long
+  double state_invalid_after_s = 0.02;    // shorter gaps are damped by the guard alone
+};
+
+struct HealthVerdict {
+  Protection protection = Protection::None;
+  std::uint32_t causes = kHealthOk;  // HealthCause bits of this tick
+  std::uint32_t faulty_motors = 0;   // bit i: motor i reports an error or a warning
+  double protected_s = 0.0;          // how long the protection has lasted
+
+  bool protecting() const { return protection != Protection::None; }
+};
+
+class HealthMonitor {
+ public:
+  explicit HealthMonitor(const HealthLimits& limits = {});
+  // once per tick, with the estimator's state of this tick
+  HealthVerdict update(const RobotState& state);
+
+ private:
+  bool imu_stuck(const RobotState& state);
+
+  HealthLimits limits_;
+  HealthVerdict verdict_;
+  double protected_since_s_ = 0.0;
+  double invalid_since_s_ = -1.0;
+  // the last IMU-derived sample and joint angles, and since when the IMU has not changed
+  bool have_sample_ = false;
+  std::array<double, 10> imu_sample_{};
+  JointArray<double> joints_{};
+  double imu_still_since_s_ = 0.0;
+  bool joints_moved_ = false;
+};
+
+// a short name of each cause set in causes ("motor error, battery critical"), for logs
+const char* health_cause_name(HealthCause cause);
+
+}  // namespace cerebellum
