@@ -33,7 +33,7 @@ std::string served_endpoints(const McConfig& config) {
     add(std::string("simulation: sim_truth at ") + rate + " on " + config.highlevel.odometry_url);
   }
   if (config.sim_command.enabled) {
-    add("sim_command (cerebellum push) on " + config.highlevel.odometry_url);
+    add("sim_command (cerebellum push, fault) on " + config.highlevel.odometry_url);
   }
   return out.empty() ? "no client interface (the configuration turns every one off)" : out;
 }

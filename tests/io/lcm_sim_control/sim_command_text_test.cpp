@@ -24,10 +24,11 @@ TEST(SimCommandText, ReadsAPushAndWritesItBackExactly) {
   EXPECT_EQ(back.push->duration_s, odd.duration_s);
 }
 
-TEST(SimCommandText, RefusesWhatIsNotAPushNamingTheWord) {
+TEST(SimCommandText, RefusesWhatIsNotAPushOrAFaultNamingTheWord) {
   EXPECT_NE(error_of("").find("empty command"), std::string::npos);
-  EXPECT_NE(error_of("shove 1 2 3 4").find("unknown command 'shove' (accepted: push FX FY FZ DURATION_S)"),
+  EXPECT_NE(error_of("shove 1 2 3 4").find("unknown command 'shove' (accepted: push FX FY FZ DURATION_S, fault ...)"),
             std::string::npos);
+  EXPECT_NE(error_of("fault imu wobble").find("unknown imu fault 'wobble'"), std::string::npos);
   EXPECT_NE(error_of("push 1 2 3").find("push takes 4 numbers"), std::string::npos);
   EXPECT_NE(error_of("push 1 2 3 4 5").find("got 5"), std::string::npos);
   EXPECT_NE(error_of("push 1 x 3 0.1").find("push FY must be a finite number, got 'x'"), std::string::npos);
@@ -35,6 +36,14 @@ TEST(SimCommandText, RefusesWhatIsNotAPushNamingTheWord) {
   EXPECT_NE(error_of("push 0 0 inf 0.1").find("push FZ must be a finite number"), std::string::npos);
   EXPECT_NE(error_of("push 0 0 1 1e400").find("DURATION_S must be a finite number"), std::string::npos);
   EXPECT_NE(error_of("push 1 2 3 0.1abc").find("DURATION_S must be a finite number, got '0.1abc'"), std::string::npos);
+}
+
+TEST(SimCommandText, AFaultCommandCarriesTheFaultAndReadsBack) {
+  const SimCommand command = parse_sim_command("fault battery sag 2.5 for 3");
+  ASSERT_TRUE(command.fault.has_value()) << command.error;
+  EXPECT_FALSE(command.push.has_value());
+  EXPECT_EQ(command.fault->kind, FaultKind::BatterySag);
+  EXPECT_EQ(fault_command_text(*command.fault), "fault battery sag 2.5 for 3");
 }
 
 TEST(SimCommandText, KeepsForceAndDurationWithinTheirLimits) {

@@ -135,5 +135,27 @@ TEST_F(SimControlLockstep, RefusalsAreAnsweredWithTheReasonAndMalformedPacketsOn
   EXPECT_EQ(results_.size(), 1u);  // only the well-formed command got an answer
 }
 
+TEST_F(SimControlLockstep, AFaultCommandReachesTheRobotAndTheMcProtectsIt) {
+  run_for(3.0);  // up and standing
+  send(11, "fault motor RR_hip disconnected for 1");
+  ASSERT_TRUE(eventually([&] { return adapter_.counters().taken == 1; }));
+  run_for(0.1);
+  EXPECT_EQ(mc_.machine().status().motor_faults[7], kMotorDisconnected);
+  EXPECT_EQ(mc_.machine().status().switch_status, SwitchStatus::HighDamping);
+  const std::optional<sim_command_result_lcmt> result = answer(11);
+  ASSERT_TRUE(result);
+  EXPECT_EQ(result->result, 0);
+  EXPECT_EQ(result->reason, "taken: fault motor 7 disconnected for 1");
+  // the fault clears itself after 1 s, and so does the protection
+  run_for(1.0);
+  EXPECT_EQ(mc_.machine().status().motor_faults[7], kMotorOk);
+  EXPECT_NE(mc_.machine().status().switch_status, SwitchStatus::HighDamping);
+  send(12, "fault motor 12 disconnected");
+  const std::optional<sim_command_result_lcmt> refused = answer(12);
+  ASSERT_TRUE(refused);
+  EXPECT_EQ(refused->result, 1);
+  EXPECT_NE(refused->reason.find("motor must be 0..11"), std::string::npos) << refused->reason;
+}
+
 }  // namespace
 }  // namespace cerebellum
