@@ -9,6 +9,7 @@
 #include "app/mc.hpp"
 #include "app/simulated_robot.hpp"
 #include "core/robot_model.hpp"
+#include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
 #include "lowlevel/motor_sdk/motor_sdk_source.hpp"
 
 namespace cerebellum {
@@ -156,6 +157,35 @@ TEST_F(MotorSdkLockstep, JumpFromLyingToStandingInOneFrameIsSlowedToASafeStandUp
   EXPECT_GT(lowest_up_z, 0.9) << "the trunk tipped over";
   EXPECT_GE(height_m(), 0.2) << "the robot did not stand up";
   EXPECT_EQ(err_flag(), 0) << "the target has been reached: no jump clamped any more";
+}
+
+TEST_F(MotorSdkLockstep, AMotorFaultInMotorModeDampsWhateverTheClientSendsAndReportsTheMotor) {
+  // seed section 4: battery and motor-fault protections still work under the motor SDK
+  run(0.5, nullptr);
+  ExampleClient client;
+  run(9.0, &client);
+  ASSERT_GE(height_m(), 0.2);
+  ASSERT_EQ(mc_.faults()->request(parse_fault("motor RL_knee driver_fault").request.value()), "");
+  run(0.1, &client);
+  // the client sees the motor's bit in spi_data (the seed's example stops on it)
+  const spi_data_t spi = make_spi_data(mc_.loop().last_cycle().state);
+  EXPECT_EQ(static_cast<std::uint32_t>(spi.flags[11]), 0x80000004u);
+  EXPECT_EQ(static_cast<std::uint32_t>(spi.flags[10]), 0x80000000u);
+  // its stiff commands are replaced by damping: the robot sinks; after 3 s the motors are off
+  EXPECT_EQ(mc_.loop().last_cycle().safety.flags, kGuardHealthDamping);
+  run(3.0, &client);
+  EXPECT_EQ(mc_.loop().last_cycle().safety.flags, kGuardHealthStopped);
+  EXPECT_LT(height_m(), 0.17);
+  EXPECT_GT(up_z(), 0.8);
+  EXPECT_EQ(mc_.machine().status().switch_status, SwitchStatus::EmergencyStop);
+  // cleared: a restarted client (its err_flag starts with bit1 set, so it starts from the pose it
+  // finds) drives the motors again and stands the robot back up
+  mc_.faults()->request(parse_fault("clear").request.value());
+  ExampleClient again;
+  again.next(mc_.loop().last_cycle().state, kMotorSdkCommandLost);
+  run(9.0, &again);
+  EXPECT_EQ(mc_.loop().last_cycle().safety.flags & (kGuardHealthDamping | kGuardHealthStopped), 0u);
+  EXPECT_GE(height_m(), 0.2);
 }
 
 TEST_F(MotorSdkLockstep, StandingRobotIsNotHandedOver) {

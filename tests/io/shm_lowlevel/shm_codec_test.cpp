@@ -21,6 +21,23 @@ TEST(ShmCodec, JointStateFlagsPackEnableTemperatureAndVoltage) {
   EXPECT_EQ(shm_joint_state_flags(std::nan(""), kMotorOk, 24.0), 0x00180001);
 }
 
+TEST(ShmCodec, JointStateFlagsReportAMotorsFaultsTheWayTheOtherInterfacesDo) {
+  // lowlevel.h: bit1 over-voltage, bit2 over-current, bit3 over-temperature, bit5 encoder fault;
+  // a driver stopped by any error is not enabled (bit0 clear); the bus voltage is the battery's
+  const auto flags = [](std::uint32_t faults, double volts = 24.0) {
+    return static_cast<std::uint32_t>(shm_joint_state_flags(25.0, faults, volts)) & 0xFFu;
+  };
+  EXPECT_EQ(flags(kMotorOk), 0x01u);
+  EXPECT_EQ(flags(kMotorTemperatureWarning), 0x01u);  // a warning: still enabled
+  EXPECT_EQ(flags(kMotorOverTemperature | kMotorTemperatureWarning), 0x08u);
+  EXPECT_EQ(flags(kMotorOverVoltage), 0x02u);
+  EXPECT_EQ(flags(kMotorOverCurrent), 0x04u);
+  EXPECT_EQ(flags(kMotorEncoderLost), 0x20u);
+  EXPECT_EQ(flags(kMotorDisconnected), 0x00u);
+  EXPECT_EQ(flags(kMotorDriverFault), 0x00u);
+  EXPECT_EQ(static_cast<std::uint32_t>(shm_joint_state_flags(25.0, kMotorOk, 17.4)) >> 16, 17u);
+}
+
 SensorFrame numbered_frame() {
   SensorFrame frame;
   frame.time_s = 1.234;
