@@ -2,7 +2,7 @@
 """Plots a telemetry CSV of `cerebellum sim --telemetry FILE.csv` into PNG files.
 
 usage: scripts/plot_telemetry.py FILE.csv --out DIR
-writes DIR/body_height.png, velocity_tracking.png, joint_torques.png, temperatures.png.
+writes DIR/body_height.png, velocity_tracking.png, joint_torques.png, temperatures.png, battery.png.
 Needs Debian's python3-matplotlib (run with /usr/bin/python3). Columns named truth_* are
 simulator truth (tools only); est_* are the MC's estimator; cmd_* are drawn when present.
 """
@@ -109,6 +109,25 @@ def plot_per_joint(columns, out_dir, quantity, unit_suffix, ylabel, title, name)
     return save(figure, out_dir, name)
 
 
+def plot_battery(columns, out_dir):
+    """State of charge and terminal voltage, with the times the health protection was on."""
+    figure, axes = plt.subplots(2, 1, figsize=(10, 5), sharex=True)
+    t = columns["time_s"]
+    axes[0].plot(t, columns["battery_soc_percent"])
+    axes[0].set_ylabel("state of charge (%)")
+    axes[1].plot(t, columns["battery_v"])
+    axes[1].set_ylabel("voltage (V)")
+    protected = [c != 0 for c in columns["health_causes"]]
+    for axis in axes:
+        axis.grid(alpha=0.3)
+        axis.fill_between(t, 0, 1, where=protected, transform=axis.get_xaxis_transform(), color="red", alpha=0.15,
+                          label="health protection")
+    axes[0].legend(loc="upper right", fontsize=8)
+    axes[-1].set_xlabel("time (s)")
+    figure.suptitle("battery")
+    return save(figure, out_dir, "battery.png")
+
+
 def main(argv):
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("csv", help="telemetry CSV from cerebellum sim --telemetry")
@@ -127,6 +146,8 @@ def main(argv):
         plot_per_joint(columns, args.out, "temp", "c", "temperature (deg C)", "motor temperatures",
                        "temperatures.png"),
     ]
+    if "battery_soc_percent" in columns:
+        written.append(plot_battery(columns, args.out))
     for path in written:
         print(f"plot_telemetry: wrote {path}")
     return 0

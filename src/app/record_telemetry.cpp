@@ -46,6 +46,11 @@ TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, 
   row.truth_rpy = {truth_rpy.x(), truth_rpy.y(), truth_rpy.z()};
   row.tau_nm = state.tau;
   row.temperature_c = state.temperature_c;
+  row.battery_soc_percent = state.battery.state_of_charge_percent;
+  row.battery_v = state.battery.voltage_v;
+  row.battery_a = state.battery.current_a;
+  row.health_causes = record.health.causes;
+  row.faulty_motors = record.health.faulty_motors;
   return row;
 }
 
@@ -62,6 +67,7 @@ std::string telemetry_header() {
       }
     }
   }
+  header += ",battery_soc_percent,battery_v,battery_a,health_causes,faulty_motors";
   return header;
 }
 
@@ -79,6 +85,10 @@ std::string telemetry_line(const TelemetryRow& row) {
   for (double v : row.truth_rpy) append_number(line, v);
   for (double v : row.tau_nm) append_number(line, v);
   for (double v : row.temperature_c) append_number(line, v);
+  append_number(line, row.battery_soc_percent);
+  append_number(line, row.battery_v);
+  append_number(line, row.battery_a);
+  line += "," + std::to_string(row.health_causes) + "," + std::to_string(row.faulty_motors);
   return line;
 }
 

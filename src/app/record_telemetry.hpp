@@ -34,6 +34,11 @@ struct TelemetryRow {
   std::array<double, 3> truth_rpy{};
   JointArray<double> tau_nm{};
   JointArray<double> temperature_c{};
+  double battery_soc_percent = 0.0;  // as the battery reports it (0 without a battery)
+  double battery_v = 0.0;
+  double battery_a = 0.0;
+  std::uint32_t health_causes = 0;  // HealthCause bits of the health protection
+  std::uint32_t faulty_motors = 0;  // bit i: motor i reports an error or a warning
 };
 
 TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, const HighLevelStatus& status,

@@ -39,6 +39,12 @@ void SnapshotCapture::capture(const CycleRecord& record, SimSnapshot& out) const
   const GroundTruth truth = simulation_.ground_truth();
   out.true_velocity_body = planar_velocity_body(truth.quat, truth.velocity_world, truth.angular_velocity_body);
   out.true_height_m = truth.position[2];
+  out.battery_soc_percent = state.battery.present ? state.battery.state_of_charge_percent : -1.0;
+  out.battery_v = state.battery.voltage_v;
+  const auto hottest = std::max_element(state.temperature_c.begin(), state.temperature_c.end());
+  out.hottest_motor = static_cast<int>(hottest - state.temperature_c.begin());
+  out.hottest_motor_c = *hottest;
+  out.faulty_motors = record.health.faulty_motors;
 }
 
 std::array<double, 3> planar_velocity_body(const std::array<double, 4>& quat,

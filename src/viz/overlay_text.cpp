@@ -46,6 +46,25 @@ OverlayText status_overlay(const SimSnapshot& snapshot, const std::string& run_s
                 format("  height %.3f m", snapshot.estimated_height_m, 0, 0) + "\n" +
                 format("vx %+.2f  vy %+.2f m/s  wz %+.2f rad/s", truth[0], truth[1], truth[2]) +
                 format("  height %.3f m", snapshot.true_height_m, 0, 0);
+  // the robot's health
+  text.titles += "\nrobot";
+  text.values += "\n";
+  if (snapshot.battery_soc_percent >= 0.0) {
+    text.values += format("battery %.1f %%  %.1f V  ", snapshot.battery_soc_percent, snapshot.battery_v, 0);
+  }
+  const auto leg = static_cast<std::size_t>(snapshot.hottest_motor) / kJointsPerLeg;
+  const auto joint = static_cast<std::size_t>(snapshot.hottest_motor) % kJointsPerLeg;
+  text.values += format("hottest motor %.0f C ", snapshot.hottest_motor_c, 0, 0) + "(" + kLegNames[leg % kNumLegs] +
+                 " " + kJointNames[joint] + ")";
+  if (snapshot.faulty_motors != 0) {
+    text.values += "  faulty motors:";
+    for (std::size_t i = 0; i < kNumJoints; ++i) {
+      if (snapshot.faulty_motors & (1u << i)) {
+        text.values += ' ';
+        text.values += std::to_string(i);
+      }
+    }
+  }
   if (!run_state.empty()) {
     text.titles += "\nrun";
     text.values += "\n" + run_state;

@@ -24,6 +24,13 @@ struct SimSnapshot {
   // simulator truth, labelled as such wherever shown
   std::array<double, 3> true_velocity_body{};  // vx, vy (m/s), yaw rate (rad/s)
   double true_height_m = 0.0;
+  // the robot's health: battery (state of charge < 0 without one), the hottest motor, and the
+  // motors reporting an error or a warning (bit i: motor i)
+  double battery_soc_percent = -1.0;
+  double battery_v = 0.0;
+  double hottest_motor_c = 0.0;
+  int hottest_motor = 0;
+  std::uint32_t faulty_motors = 0;
 };
 
 }  // namespace cerebellum

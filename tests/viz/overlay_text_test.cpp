@@ -32,14 +32,20 @@ TEST(OverlayText, ShowsStatusEstimateAndTruthRowByRow) {
   snapshot.true_velocity_body = {0.29, -0.04, 0.19};
   snapshot.estimated_height_m = 0.251;
   snapshot.true_height_m = 0.249;
+  snapshot.battery_soc_percent = 87.34;
+  snapshot.battery_v = 24.61;
+  snapshot.hottest_motor = 5;
+  snapshot.hottest_motor_c = 41.2;
+  snapshot.faulty_motors = (1u << 2) | (1u << 11);
 
   const OverlayText text = status_overlay(snapshot, "paused");
   ASSERT_EQ(lines(text.titles), lines(text.values));
-  EXPECT_EQ(text.titles, "12.35 s\ncommanded\nestimated\ntruth\nrun");
+  EXPECT_EQ(text.titles, "12.35 s\ncommanded\nestimated\ntruth\nrobot\nrun");
   EXPECT_EQ(text.values,
             "mode 11 locomotion, gait 27, done\nvx +0.30  vy +0.00 m/s  wz +0.20 rad/s\n"
             "vx +0.31  vy -0.05 m/s  wz +0.20 rad/s  height 0.251 m\n"
-            "vx +0.29  vy -0.04 m/s  wz +0.19 rad/s  height 0.249 m\npaused");
+            "vx +0.29  vy -0.04 m/s  wz +0.19 rad/s  height 0.249 m\n"
+            "battery 87.3 %  24.6 V  hottest motor 41 C (FL knee)  faulty motors: 2 11\npaused");
 
   const OverlayText without_run_state = status_overlay(snapshot, "");
   EXPECT_EQ(lines(without_run_state.titles), lines(text.titles) - 1);

@@ -77,6 +77,9 @@ TEST(TelemetryRow, CopiesStateTruthAndStatusIntoTheirColumns) {
     record.state.tau[i] = 0.5 * static_cast<double>(i);
     record.state.temperature_c[i] = 30.0 + static_cast<double>(i);
   }
+  record.state.battery = {true, 23.5, 3.25, 61.5};
+  record.health.causes = kHealthMotorWarning;
+  record.health.faulty_motors = 1u << 7;
   GroundTruth truth;
   truth.position = {1.0, 2.0, 0.255};
   truth.quat = quat_from_rpy(0.0, 0.0, M_PI / 2);
@@ -93,7 +96,7 @@ TEST(TelemetryRow, CopiesStateTruthAndStatusIntoTheirColumns) {
   const TelemetryRow row = telemetry_row(record, truth, status, running);
   const std::vector<std::string> header = split(telemetry_header());
   const std::vector<std::string> fields = split(telemetry_line(row));
-  ASSERT_EQ(header.size(), 22u + 2 * kNumJoints);
+  ASSERT_EQ(header.size(), 22u + 2 * kNumJoints + 5);
   ASSERT_EQ(fields.size(), header.size());
   const auto column = [&](const std::string& name) {
     for (std::size_t i = 0; i < header.size(); ++i) {
@@ -122,6 +125,11 @@ TEST(TelemetryRow, CopiesStateTruthAndStatusIntoTheirColumns) {
   EXPECT_NEAR(column("tau_fr_abad_nm"), 0.0, 1e-9);
   EXPECT_NEAR(column("tau_rl_knee_nm"), 5.5, 1e-9);
   EXPECT_NEAR(column("temp_fl_hip_c"), 34.0, 1e-9);
+  EXPECT_NEAR(column("battery_soc_percent"), 61.5, 1e-9);
+  EXPECT_NEAR(column("battery_v"), 23.5, 1e-9);
+  EXPECT_NEAR(column("battery_a"), 3.25, 1e-9);
+  EXPECT_EQ(column("health_causes"), kHealthMotorWarning);
+  EXPECT_EQ(column("faulty_motors"), 128);
 }
 
 }  // namespace

@@ -104,7 +104,8 @@ TEST(ToolsCli, TelemetryRowsAtTheRateAndPlotsFromThem) {
   const auto plotted = run_command("/usr/bin/python3 " + quoted(CEREBELLUM_SOURCE_DIR "/scripts/plot_telemetry.py") +
                                    " " + quoted(csv) + " --out " + quoted(plots));
   ASSERT_EQ(plotted.exit_code, 0) << plotted.output;
-  for (const char* name : {"body_height.png", "velocity_tracking.png", "joint_torques.png", "temperatures.png"}) {
+  for (const char* name :
+       {"body_height.png", "velocity_tracking.png", "joint_torques.png", "temperatures.png", "battery.png"}) {
     const std::string png = test::read_file(plots + "/" + name);
     EXPECT_GT(png.size(), 10000u) << name;
     EXPECT_EQ(png.substr(0, 8), "\x89PNG\r\n\x1a\n") << name;
