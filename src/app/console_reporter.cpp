@@ -37,8 +37,17 @@ void ConsoleReporter::drain() {
 
 void ConsoleReporter::print(const CycleRecord& record) {
   const RobotState& s = record.state;
-  std::fprintf(out_, "t=%7.2f s  height=%.3f m  rpy=(%+.2f %+.2f %+.2f)  guard=0x%02x\n", s.time_s, s.height_m,
-               s.rpy.x(), s.rpy.y(), s.rpy.z(), record.safety.flags);
+  std::fprintf(out_, "t=%7.2f s  height=%.3f m  rpy=(%+.2f %+.2f %+.2f)  guard=0x%02x", s.time_s, s.height_m, s.rpy.x(),
+               s.rpy.y(), s.rpy.z(), record.safety.flags);
+  if (s.battery.present) {
+    std::fprintf(out_, "  battery=%.1f %% %.1f V", s.battery.state_of_charge_percent, s.battery.voltage_v);
+  }
+  if (record.health.protecting()) {
+    std::fprintf(out_, "  PROTECTED (%s, causes 0x%02x, %.1f s)",
+                 record.health.protection == Protection::Stopped ? "motors off" : "damping",
+                 static_cast<unsigned>(record.health.causes), record.health.protected_s);
+  }
+  std::fputc('\n', out_);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     std::fprintf(out_,
                  "    %s q=(%+.3f %+.3f %+.3f) rad  qd=(%+6.2f %+6.2f %+6.2f) rad/s  tau=(%+5.2f %+5.2f %+5.2f) Nm\n",

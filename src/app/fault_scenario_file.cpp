@@ -32,7 +32,9 @@ std::vector<TimedFault> parse_fault_scenario(const std::string& text, const std:
   std::vector<TimedFault> scenario;
   scenario.reserve(list.size());
   for (std::size_t i = 0; i < list.size(); ++i) {
-    const std::string entry_name = "faults[" + std::to_string(i) + "]";
+    std::string entry_name = "faults[";
+    entry_name += std::to_string(i);
+    entry_name += ']';
     const SectionReader entry(list[i], name, entry_name, {"at_s", "fault", "duration_s"}, kKind);
     if (!entry.has("at_s")) entry.fail(entry_name, "needs at_s (simulated seconds from the start)");
     if (!entry.has("fault")) entry.fail(entry_name, "needs fault (for example: motor 3 disconnected)");

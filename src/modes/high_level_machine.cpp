@@ -110,13 +110,26 @@ void HighLevelMachine::switch_to(Mode& mode, const RobotState& state, const High
   mode.enter(state, command);
 }
 
-void HighLevelMachine::observe_health(const HealthVerdict& verdict) { health_ = verdict; }
+void HighLevelMachine::observe_health(const HealthVerdict& verdict) {
+  health_ = verdict;
+  // remembered until the next tick with a valid state acts on it: a protection that began and
+  // ended while the state could not be trusted (compute() is not called then) still stops the
+  // running mode
+  if (verdict.protection == Protection::Stopped || (verdict.protecting() && pending_protection_ == Protection::None)) {
+    pending_protection_ = verdict.protection;
+  }
+  // reported at once, also while compute() is not called
+  if (verdict.protecting() && !handed_over_) {
+    status_.switch_status =
+        verdict.protection == Protection::Stopped ? SwitchStatus::EmergencyStop : SwitchStatus::HighDamping;
+  }
+}
 
-void HighLevelMachine::protect(const RobotState& state) {
+void HighLevelMachine::protect(const RobotState& state, Protection protection) {
   // the client's sequence is dropped; what arrives while protected is refused in apply()
   queue_.clear();
   applied_generation_ = queue_.generation();
-  const ModeId target = health_.protection == Protection::Stopped ? ModeId::Off : ModeId::PureDamper;
+  const ModeId target = protection == Protection::Stopped ? ModeId::Off : ModeId::PureDamper;
   if (current_->id() == target || (target == ModeId::PureDamper && current_->id() == ModeId::Off)) return;
   Mode* mode = mode_for(static_cast<int>(target));
   if (mode == nullptr) return;
@@ -215,6 +228,11 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
     if (startup == nullptr) startup = mode_for(static_cast<int>(ModeId::Off));
     switch_to(*startup, state, startup_);
   }
+  // the health protection first: what the client sends from now on meets the protected mode
+  if (pending_protection_ != Protection::None) {
+    protect(state, pending_protection_);
+    pending_protection_ = health_.protection;
+  }
   // client input of this tick, from the client holding the robot
   while (const auto input = inbox_.try_pop()) {
     if (holds_lease(*input)) take_input(*input);
@@ -231,7 +249,6 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
       switch_to(*damper, state, damp);
     }
   }
-  if (health_.protecting()) protect(state);
   // a refused entry leaves the queue as if it had never been sent (it neither waits out its
   // duration nor leaves a hold behind); what follows it is applied at once
   for (std::size_t attempt = 0; queue_.generation() != applied_generation_; ++attempt) {

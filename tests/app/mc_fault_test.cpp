@@ -150,5 +150,20 @@ TEST(McFaults, AnImuThatSendsNaNIsNeverTurnedIntoACommand) {
   EXPECT_LT(run.max_tilt_rad, 0.8);
 }
 
+TEST(McFaults, AProtectionWhileTheStateCannotBeTrustedIsReportedAndStopsTheRunningMode) {
+  // the NaN lasts 0.5 s: the controller is not asked while it lasts, yet the response says EDAMP
+  // and, once the IMU is back, the stand does not resume by itself
+  FaultRun run;
+  run.inject("imu nan for 0.5");
+  run.run(high_level_command(ModeId::RecoveryStand, 0), 0.3);
+  EXPECT_EQ(run.mc.machine().status().switch_status, SwitchStatus::HighDamping);
+  const HighLevelCommand idle = high_level_command(ModeId::PureDamper, 0);
+  run.client.run(idle, 2.0);
+  EXPECT_EQ(run.mc.machine().status().mode, 7);
+  EXPECT_EQ(run.mc.machine().status().switch_status, SwitchStatus::Done);
+  EXPECT_LT(run.height(), 0.15);
+  EXPECT_LT(run.max_tilt_rad, 0.8);
+}
+
 }  // namespace
 }  // namespace cerebellum
