@@ -23,6 +23,8 @@ std::string usage() {
          "  imu bias RAD_S | stuck | dropout | nan\n"
          "  battery soc PERCENT | drain FACTOR | capacity AH | sag VOLTS\n"
          "  foot LEG slippery [MU]                           ground friction under one foot (default 0.05)\n"
+         "  link highlevel|motor_sdk|aliengo drop P | delay S | duplicate P | corrupt P | clear\n"
+         "                                                  incoming client packets (probabilities 0..1)\n"
          "  clear [motor N | imu | battery | foot LEG]        everything, or one component\n"
          "  N: 0..11 in SDK order or a name such as FR_knee; LEG: 0..3 or FR, FL, RR, RL\n"
          "  for SECONDS   the fault clears itself after this much simulated time\n"
@@ -35,7 +37,7 @@ std::string usage() {
 }
 
 struct FaultOptions {
-  FaultRequest request;
+  std::string text;  // the sim_command text
   std::string url = HighLevelLcmConfig{}.odometry_url;
   double timeout_s = 2.0;
   bool help = false;
@@ -75,9 +77,15 @@ FaultOptions parse(const std::vector<std::string>& args) {
   }
   if (options.help) return options;
   // the simulation's own grammar, applied before sending
-  FaultParse parsed = parse_fault(words);
+  if (!words.empty() && words[0] == "link") {
+    const LinkFaultParse parsed = parse_link_fault(words);
+    if (!parsed.request) throw std::invalid_argument(parsed.error);
+    options.text = fault_command_text(*parsed.request);
+    return options;
+  }
+  const FaultParse parsed = parse_fault(words);
   if (!parsed.request) throw std::invalid_argument(parsed.error);
-  options.request = *parsed.request;
+  options.text = fault_command_text(*parsed.request);
   return options;
 }
 
@@ -95,7 +103,7 @@ int run_fault_command(const std::vector<std::string>& args) {
     std::fputs(usage().c_str(), stdout);
     return 0;
   }
-  return send_sim_command(options.url, fault_command_text(options.request), options.timeout_s, "fault");
+  return send_sim_command(options.url, options.text, options.timeout_s, "fault");
 }
 
 }  // namespace cerebellum

@@ -49,6 +49,9 @@ int run_sim_command(const std::vector<std::string>& args) {
     // client interfaces attach here: mc.arbiter() sources, loop observers, substep participants
     ConsoleReporter reporter(stdout);
     loop.add_observer(reporter);
+    // the client links' faults (`cerebellum fault link ...`): before the adapters that use them
+    LinkFaultSet link_faults;
+    const bool link_faults_served = config.sim_command.enabled;
     std::optional<ShmLowLevelSource> shm;
     if (config.shm.enabled) {
       shm.emplace(config.shm, config.safety, stderr);  // events go where every interface logs
@@ -58,17 +61,20 @@ int run_sim_command(const std::vector<std::string>& args) {
     std::optional<LcmMotorSdkAdapter> motor_sdk;
     if (config.motor_sdk.enabled) {
       motor_sdk.emplace(config.motor_sdk, stderr);
+      if (link_faults_served) motor_sdk->attach_link_faults(link_faults.motor_sdk);
       mc.arbiter().add_low_level_source(motor_sdk->source());
       loop.add_observer(*motor_sdk);
     }
     std::optional<LcmHighLevelAdapter> highlevel;
     if (config.highlevel.enabled) {
       highlevel.emplace(mc.machine(), mc.user_gait_slot(), config.highlevel, config.loop_period_s, stderr);
+      if (link_faults_served) highlevel->attach_link_faults(link_faults.highlevel);
       loop.add_observer(*highlevel);
     }
     std::optional<UdpAliengoAdapter> aliengo;
     if (config.aliengo.enabled) {
       aliengo.emplace(mc.machine(), config.aliengo, stderr);
+      if (link_faults_served) aliengo->attach_link_faults(link_faults.aliengo);
       loop.add_observer(*aliengo);
     }
     // state_estimator and leg_control_data: listed by both interfaces, published once for both
@@ -87,7 +93,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     // the simulation's own control channel (pushes): on the odometry URL with sim_truth
     std::optional<SimControlAdapter> sim_control;
     if (config.sim_command.enabled)
-      sim_control.emplace(mc.simulation(), mc.faults(), config.highlevel.odometry_url, stderr);
+      sim_control.emplace(mc.simulation(), mc.faults(), &link_faults, config.highlevel.odometry_url, stderr);
     SimTools tools(mc, options);
 
     char speed[32] = "max";

@@ -188,6 +188,9 @@ FaultParse parse_fault(const std::vector<std::string>& all_words) {
     request.target = head == "imu" ? FaultTarget::Imu : FaultTarget::Battery;
     if (words.size() < 2)
       return failure(head + " FAULT: the fault is missing (faults: " + kinds_of(request.target) + ")");
+  } else if (head == "link") {
+    return failure(
+        "link faults act on the interfaces, not the robot: set them at run time with `cerebellum fault link ...`");
   } else {
     return failure("unknown component '" + clip(head) + "' (accepted: motor, imu, battery, foot, clear)");
   }

@@ -110,6 +110,7 @@ write("sim_command_text", "unknown", "teleport 1 2 3")
 write("sim_command_text", "fault_motor", "fault motor FR_knee disconnected for 2")
 write("sim_command_text", "fault_battery", "fault battery soc 15")
 write("sim_command_text", "fault_bad", "fault motor 12 derated 1.5")
+write("sim_command_text", "fault_link", "fault link highlevel drop 0.5")
 write("fault_scenario", "scenario", "faults:\n  - at_s: 5\n    fault: motor FR_knee disconnected\n    duration_s: 4\n"
       "  - {at_s: 12, fault: battery soc 4}\n  - {at_s: 20, fault: clear}\n")
 write("fault_scenario", "duplicate_key", "faults:\n  - {at_s: 1, fault: imu stuck, at_s: 2}\n")

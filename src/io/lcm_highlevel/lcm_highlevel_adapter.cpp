@@ -91,6 +91,9 @@ HighLevelInterfaceCounters LcmHighLevelAdapter::counters() const {
 void LcmHighLevelAdapter::step() {
   // everything that arrived, then what the loop queued
   handle_pending(*command_lcm_, 1);
+  if (LinkFaults* faults = link_faults_.load()) {
+    faults->release(wall_seconds(), [this](const std::uint8_t* data, std::size_t size) { handle_command(data, size); });
+  }
   drain();
   keep_response_alive();
   log_refusals();
@@ -102,8 +105,18 @@ void LcmHighLevelAdapter::drain() {
 }
 
 void LcmHighLevelAdapter::on_command(const lcm::ReceiveBuffer* buffer, const std::string&) {
+  const auto* data = static_cast<const std::uint8_t*>(buffer->data);
+  if (LinkFaults* faults = link_faults_.load()) {
+    faults->pass(data, buffer->data_size, wall_seconds(),
+                 [this](const std::uint8_t* bytes, std::size_t size) { handle_command(bytes, size); });
+    return;
+  }
+  handle_command(data, buffer->data_size);
+}
+
+void LcmHighLevelAdapter::handle_command(const std::uint8_t* data, std::size_t size) {
   HighLevelCommand command;
-  switch (decode_robot_control_cmd(buffer->data, buffer->data_size, command)) {
+  switch (decode_robot_control_cmd(data, size, command)) {
     case WireDecode::Ok:
       machine_.submit(command, robot_time_s_.load(std::memory_order_relaxed));
       commands_submitted_.fetch_add(1);

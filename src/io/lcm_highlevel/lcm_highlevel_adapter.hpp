@@ -17,6 +17,7 @@
 #include "cycle/cycle_observer.hpp"
 #include "io/common/adapter_thread.hpp"
 #include "io/common/count_report.hpp"
+#include "io/common/link_faults.hpp"
 #include "io/common/rate_limited_log.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_highlevel/response_schedule.hpp"
@@ -56,6 +57,8 @@ class LcmHighLevelAdapter final : public CycleObserver {
   ~LcmHighLevelAdapter() override;
   LcmHighLevelAdapter(const LcmHighLevelAdapter&) = delete;
   LcmHighLevelAdapter& operator=(const LcmHighLevelAdapter&) = delete;
+  // simulation only: robot_control_cmd packets pass these link faults before they are decoded
+  void attach_link_faults(LinkFaults& faults) { link_faults_.store(&faults); }
 
   // loop thread, right after the tick: note the robot time, decide what is due, copy
   void on_cycle(const CycleRecord& record) override;
@@ -80,6 +83,7 @@ class LcmHighLevelAdapter final : public CycleObserver {
   void step();
   void drain();
   void on_command(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+  void handle_command(const std::uint8_t* data, std::size_t size);
   void on_gait_file(const lcm::ReceiveBuffer* buffer, const std::string& channel);
   void publish(const Telemetry& telemetry);
   void publish_response(const HighLevelStatus& status, std::uint64_t tick);
@@ -91,6 +95,7 @@ class LcmHighLevelAdapter final : public CycleObserver {
   HighLevelMachine& machine_;
   UserGaitSlot& slot_;
   std::FILE* log_;
+  std::atomic<LinkFaults*> link_faults_{nullptr};
   double keepalive_s_;
   std::unique_ptr<lcm::LCM> command_lcm_;
   std::unique_ptr<lcm::LCM> response_lcm_;

@@ -51,6 +51,10 @@ MotorCtrlRejections LcmMotorSdkAdapter::rejections() const {
 
 void LcmMotorSdkAdapter::step() {
   handle_pending(*control_lcm_, 1);
+  if (LinkFaults* faults = link_faults_.load()) {
+    faults->release(wall_seconds(),
+                    [this](const std::uint8_t* data, std::size_t size) { handle_motor_ctrl(data, size); });
+  }
   while (std::optional<Telemetry> telemetry = telemetry_.try_pop()) {
     publish(*telemetry);
     log_changes(telemetry->status);
@@ -63,8 +67,18 @@ void LcmMotorSdkAdapter::drain() {
 }
 
 void LcmMotorSdkAdapter::on_motor_ctrl(const lcm::ReceiveBuffer* buffer, const std::string&) {
+  const auto* data = static_cast<const std::uint8_t*>(buffer->data);
+  if (LinkFaults* faults = link_faults_.load()) {
+    faults->pass(data, buffer->data_size, wall_seconds(),
+                 [this](const std::uint8_t* bytes, std::size_t size) { handle_motor_ctrl(bytes, size); });
+    return;
+  }
+  handle_motor_ctrl(data, buffer->data_size);
+}
+
+void LcmMotorSdkAdapter::handle_motor_ctrl(const std::uint8_t* data, std::size_t size) {
   JointCommand frame;
-  switch (decode_motor_ctrl(buffer->data, buffer->data_size, frame)) {
+  switch (decode_motor_ctrl(data, size, frame)) {
     case WireDecode::Ok: source_.mailbox().push(frame, robot_time_s_.load(std::memory_order_relaxed)); return;
     case WireDecode::WrongFingerprint: wrong_fingerprint_.fetch_add(1, std::memory_order_relaxed); return;
     case WireDecode::Truncated: truncated_.fetch_add(1, std::memory_order_relaxed); return;

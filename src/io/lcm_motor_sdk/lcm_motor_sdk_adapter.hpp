@@ -15,6 +15,7 @@
 #include "cycle/cycle_observer.hpp"
 #include "io/common/adapter_thread.hpp"
 #include "io/common/count_report.hpp"
+#include "io/common/link_faults.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
 #include "lowlevel/motor_sdk/motor_sdk_source.hpp"
 
@@ -40,6 +41,8 @@ class LcmMotorSdkAdapter final : public CycleObserver {
   LcmMotorSdkAdapter(const MotorSdkConfig& config, std::FILE* log);
   ~LcmMotorSdkAdapter() override;
   LcmMotorSdkAdapter(const LcmMotorSdkAdapter&) = delete;
+  // simulation only: motor_ctrl packets pass these link faults before they are decoded
+  void attach_link_faults(LinkFaults& faults) { link_faults_.store(&faults); }
   LcmMotorSdkAdapter& operator=(const LcmMotorSdkAdapter&) = delete;
 
   // register with SourceArbiter::add_low_level_source
@@ -65,12 +68,14 @@ class LcmMotorSdkAdapter final : public CycleObserver {
   void step();
   void drain();
   void on_motor_ctrl(const lcm::ReceiveBuffer* buffer, const std::string& channel);
+  void handle_motor_ctrl(const std::uint8_t* data, std::size_t size);
   void publish(const Telemetry& telemetry);
   void log_changes(const MotorSdkStatus& status);
   void log_counts_once_per_second();
 
   MotorSdkSource source_;
   std::FILE* log_;
+  std::atomic<LinkFaults*> link_faults_{nullptr};
   std::unique_ptr<lcm::LCM> control_lcm_;
   SpscRing<Telemetry, 64> telemetry_;
   std::atomic<double> robot_time_s_{0.0};  // of the newest cycle record, stamps received frames

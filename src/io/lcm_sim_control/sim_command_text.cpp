@@ -41,6 +41,12 @@ SimCommand parse_sim_command(const std::string& text) {
     command.error = "empty command (accepted: push FX FY FZ DURATION_S, fault ...)";
     return command;
   }
+  if (words[0] == "fault" && words.size() > 1 && words[1] == "link") {
+    LinkFaultParse parsed = parse_link_fault(std::vector<std::string>(words.begin() + 1, words.end()));
+    command.link = parsed.request;
+    command.error = parsed.error;
+    return command;
+  }
   if (words[0] == "fault") {
     FaultParse parsed = parse_fault(std::vector<std::string>(words.begin() + 1, words.end()));
     command.fault = parsed.request;
@@ -87,5 +93,7 @@ std::string push_command_text(const ForcePulse& pulse) {
 }
 
 std::string fault_command_text(const FaultRequest& request) { return "fault " + fault_text(request); }
+
+std::string fault_command_text(const LinkFaultRequest& request) { return "fault " + link_fault_text(request); }
 
 }  // namespace cerebellum

@@ -19,10 +19,11 @@ constexpr std::size_t kPacketMaxBytes = 8 + 8 + 4 + kSimCommandTextMaxBytes + 1;
 
 }  // namespace
 
-SimControlAdapter::SimControlAdapter(Simulation& simulation, FaultInjectingBackend* faults, const std::string& url,
-                                     std::FILE* log)
+SimControlAdapter::SimControlAdapter(Simulation& simulation, FaultInjectingBackend* faults, LinkFaultSet* links,
+                                     const std::string& url, std::FILE* log)
     : simulation_(simulation),
       faults_(faults),
+      links_(links),
       log_(log),
       lcm_(open_lcm_url(url, kInterfaceName)),
       log_lines_(log, kInterfaceName, "sim_command results", kLinesPerSecond) {
@@ -67,6 +68,15 @@ void SimControlAdapter::on_command(const lcm::ReceiveBuffer* buffer, const std::
     log_lines_.line(wall_seconds(), "refused: " + why);
     answer(message.request_id, false, why);
   };
+  if (command.link) {
+    if (links_ == nullptr) return refuse("this simulation has no client link faults");
+    links_->of(command.link->link).apply(*command.link);
+    taken_.fetch_add(1);
+    const std::string done = "taken: " + fault_command_text(*command.link);
+    log_lines_.line(wall_seconds(), done);
+    answer(message.request_id, true, done);
+    return;
+  }
   if (command.fault) {
     if (faults_ == nullptr) return refuse("this robot has no fault injector");
     if (const std::string why = faults_->request(*command.fault); !why.empty()) return refuse(why);

@@ -14,6 +14,7 @@
 #include "backend/fault_injecting_backend.hpp"
 #include "backend/simulation.hpp"
 #include "io/common/adapter_thread.hpp"
+#include "io/common/link_faults.hpp"
 #include "io/common/rate_limited_log.hpp"
 
 namespace lcm {
@@ -34,9 +35,10 @@ struct SimControlCounters {
 
 class SimControlAdapter {
  public:
-  // faults: the robot's fault injector, or nullptr (fault commands are then refused);
-  // throws std::runtime_error naming a url LCM cannot open
-  SimControlAdapter(Simulation& simulation, FaultInjectingBackend* faults, const std::string& url, std::FILE* log);
+  // faults: the robot's fault injector, links: the client links' faults, or nullptr (such fault
+  // commands are then refused); throws std::runtime_error naming a url LCM cannot open
+  SimControlAdapter(Simulation& simulation, FaultInjectingBackend* faults, LinkFaultSet* links, const std::string& url,
+                    std::FILE* log);
   ~SimControlAdapter();
   SimControlAdapter(const SimControlAdapter&) = delete;
   SimControlAdapter& operator=(const SimControlAdapter&) = delete;
@@ -52,6 +54,7 @@ class SimControlAdapter {
 
   Simulation& simulation_;
   FaultInjectingBackend* faults_;
+  LinkFaultSet* links_;
   std::FILE* log_;
   std::unique_ptr<lcm::LCM> lcm_;
   RateLimitedLog log_lines_;

@@ -16,6 +16,7 @@
 #include "core/spsc_ring.hpp"
 #include "cycle/cycle_observer.hpp"
 #include "io/common/adapter_thread.hpp"
+#include "io/common/link_faults.hpp"
 #include "io/common/rate_limited_log.hpp"
 #include "io/udp_aliengo/aliengo_session.hpp"
 #include "io/udp_aliengo/aliengo_wire.hpp"
@@ -44,6 +45,9 @@ class UdpAliengoAdapter final : public CycleObserver {
   ~UdpAliengoAdapter() override;
   UdpAliengoAdapter(const UdpAliengoAdapter&) = delete;
   UdpAliengoAdapter& operator=(const UdpAliengoAdapter&) = delete;
+  // simulation only: HighCmd datagrams pass these link faults before they are decoded (a delayed
+  // one is answered to the newest sender)
+  void attach_link_faults(LinkFaults& faults) { link_faults_.store(&faults); }
 
   // loop thread, after the tick: copy the state and the MC's mode for the interface thread
   void on_cycle(const CycleRecord& record) override;
@@ -71,6 +75,8 @@ class UdpAliengoAdapter final : public CycleObserver {
 
   HighLevelMachine& machine_;
   std::FILE* log_;
+  std::atomic<LinkFaults*> link_faults_{nullptr};
+  sockaddr_in newest_sender_{};
   int port_ = 0;  // before socket_: opening the socket sets it
   int socket_ = -1;
   AlienGoSession session_;

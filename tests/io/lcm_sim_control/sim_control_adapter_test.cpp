@@ -35,7 +35,7 @@ class SimControlLockstep : public ::testing::Test {
   SimControlLockstep()
       : mc_(make_simulated_mc(config_)),
         log_(std::tmpfile()),
-        adapter_(mc_.simulation(), mc_.faults(), config_.highlevel.odometry_url, log_),
+        adapter_(mc_.simulation(), mc_.faults(), &links_, config_.highlevel.odometry_url, log_),
         peer_(config_.highlevel.odometry_url) {
     peer_.subscribe(kSimCommandResultChannel, &SimControlLockstep::on_result, this);
   }
@@ -84,6 +84,7 @@ class SimControlLockstep : public ::testing::Test {
 
   McConfig config_ = default_config();
   Mc mc_;
+  LinkFaultSet links_;
   std::FILE* log_;
   SimControlAdapter adapter_;
   lcm::LCM peer_;
