@@ -16,15 +16,13 @@
 
 #include "app/lockstep_client.hpp"
 #include "app/simulated_robot.hpp"
+#include "soak_support.hpp"
 
 namespace {
 
 using namespace cerebellum;
 
-bool upright(const GroundTruth& g) {
-  const double up_z = 1 - 2 * (g.quat[1] * g.quat[1] + g.quat[2] * g.quat[2]);
-  return up_z > std::cos(0.6);
-}
+using bench::upright;
 
 bool finite(const JointCommand& c) {
   for (std::size_t i = 0; i < kNumJoints; ++i) {
@@ -98,17 +96,11 @@ int main(int argc, char** argv) {
     if (arg.rfind("--minutes=", 0) == 0) minutes = std::stod(arg.substr(10));
     if (arg.rfind("--seed=", 0) == 0) seed = static_cast<unsigned>(std::stoul(arg.substr(7)));
   }
-  McConfig config = default_config();
-  config.startup = Startup::Off;
-  config.robot.model_path = std::string(CEREBELLUM_MODEL_DIR) + "/cyberdog2.xml";
-  config.robot.noise.enabled = true;
-  config.robot.noise.seed = seed;
-  Mc mc = make_simulated_mc(config);
+  Mc mc = make_simulated_mc(bench::soak_config(seed));
   LockstepClient client(mc);
   std::mt19937 rng(seed);
-  const int gaits[] = {27, 3, 10, 26, 4, 2, 7, 1};
-  std::uniform_int_distribution<int> pick(0, 7);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0), hold(1.0, 3.0), fault_length(0.3, 3.0), chance(0.0, 1.0);
+  const std::vector<int> gaits{27, 3, 10, 26, 4, 2, 7, 1};
+  std::uniform_real_distribution<double> hold(1.0, 3.0), fault_length(0.3, 3.0), chance(0.0, 1.0);
 
   client.run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
   std::map<std::string, int> injected;
@@ -118,13 +110,6 @@ int main(int argc, char** argv) {
   bool was_protecting = false;
   const auto each_tick = [&](const CycleRecord& record) {
     ++ticks;
-    if (verbose && ticks % 250 == 0 && record.state.time_s > 300 && record.state.time_s < 312) {
-      const GroundTruth g = mc.simulation().ground_truth();
-      std::fprintf(stderr, "  t %.2f valid %d health %d/%u mode %d sw %d z %.3f up %d est_h %.3f\n",
-                   record.state.time_s, record.state.valid, int(record.health.protection), record.health.causes,
-                   mc.machine().status().mode, int(mc.machine().status().switch_status), g.position[2], upright(g),
-                   record.state.height_m);
-    }
     if (!finite(record.command)) ++non_finite;
     if (record.health.protecting() && !was_protecting) ++protections;
     was_protecting = record.health.protecting();
@@ -147,13 +132,9 @@ int main(int argc, char** argv) {
       if (verbose) std::fprintf(stderr, "%.2f s: fault %s\n", mc.backend().time_s(), text.c_str());
       last_fault_end_s = std::max(last_fault_end_s, mc.backend().time_s() + length_s);
     }
-    const int gait = gaits[pick(rng)];
-    const GaitPattern p = *gait_pattern(gait);
-    Eigen::Vector3d v;
-    for (int axis = 0; axis < 3; ++axis) {
-      const double r = unit(rng);
-      v[axis] = r >= 0 ? r * p.velocity_max[axis] : -r * p.velocity_min[axis];
-    }
+    const bench::WalkCommand walk = bench::random_walk_command(rng, gaits);
+    const int gait = walk.gait;
+    const Eigen::Vector3d& v = walk.velocity;
     ++commands;
     if (verbose) {
       std::fprintf(stderr, "%.2f s: gait %d v (%.2f, %.2f, %.2f), status mode %d switch %d\n", mc.backend().time_s(),

@@ -20,6 +20,7 @@
 #include "app/lockstep_client.hpp"
 #include "core/orientation.hpp"
 #include "app/simulated_robot.hpp"
+#include "soak_support.hpp"
 
 namespace {
 
@@ -39,10 +40,7 @@ double yaw_of(const GroundTruth& g) {
   return rpy_from_quaternion(Eigen::Quaterniond(g.quat[0], g.quat[1], g.quat[2], g.quat[3])).z();
 }
 
-bool upright(const GroundTruth& g) {
-  const double up_z = 1 - 2 * (g.quat[1] * g.quat[1] + g.quat[2] * g.quat[2]);
-  return up_z > std::cos(0.6);
-}
+using bench::upright;
 
 struct Row {
   std::string name;
@@ -222,19 +220,14 @@ Row battery_row(int gait, double vx, const std::string& name) {
 Row soak_row(double minutes, unsigned seed) {
   Run run;
   std::mt19937 rng(seed);
-  const int gaits[] = {27, 3, 10, 26, 4, 2, 7};
-  std::uniform_int_distribution<int> pick(0, 6);
-  std::uniform_real_distribution<double> unit(-1.0, 1.0), hold(1.0, 3.0);
+  const std::vector<int> gaits{27, 3, 10, 26, 4, 2, 7};
+  std::uniform_real_distribution<double> hold(1.0, 3.0);
   int commands = 0, falls = 0, stops = 0, recovered = 0;
   const double end = run.mc.backend().time_s() + 60.0 * minutes;
   while (run.mc.backend().time_s() < end) {
-    const int gait = gaits[pick(rng)];
-    const GaitPattern p = *gait_pattern(gait);
-    Eigen::Vector3d v;
-    for (int axis = 0; axis < 3; ++axis) {
-      const double r = unit(rng);
-      v[axis] = r >= 0 ? r * p.velocity_max[axis] : -r * p.velocity_min[axis];
-    }
+    const bench::WalkCommand walk = bench::random_walk_command(rng, gaits);
+    const int gait = walk.gait;
+    const Eigen::Vector3d& v = walk.velocity;
     ++commands;
     bool up = true;
     run.client.run(high_level_command(ModeId::Locomotion, gait, v.x(), v.y(), v.z()), hold(rng),

@@ -12,6 +12,7 @@
 
 #include "app/lockstep_client.hpp"
 #include "app/simulated_robot.hpp"
+#include "soak_support.hpp"
 #include "core/orientation.hpp"
 #include "motions/motion_folder.hpp"
 
@@ -35,12 +36,7 @@ Eigen::Vector3d rpy_of(const GroundTruth& g) {
 }
 
 Figures run_motion(int id, unsigned seed) {
-  McConfig config = default_config();
-  config.startup = Startup::Off;
-  config.robot.model_path = std::string(CEREBELLUM_MODEL_DIR) + "/cyberdog2.xml";
-  config.robot.noise.enabled = true;
-  config.robot.noise.seed = seed;
-  Mc mc = make_simulated_mc(config);
+  Mc mc = make_simulated_mc(bench::soak_config(seed));
   LockstepClient client(mc);
   client.run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
   client.run(high_level_command(ModeId::PoseControl, 0), 1.5);  // the stand pose

@@ -5,6 +5,7 @@
 #include <stdexcept>
 
 #include "app/sim_command_client.hpp"
+#include "core/number_text.hpp"
 #include "backend/fault_request.hpp"
 #include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
@@ -61,11 +62,7 @@ FaultOptions parse(const std::vector<std::string>& args) {
       }
     } else if (arg == "--timeout") {
       const std::string& text = value();
-      try {
-        options.timeout_s = std::stod(text);
-      } catch (const std::exception&) {
-        options.timeout_s = -1.0;
-      }
+      options.timeout_s = finite_number(text).value_or(-1.0);
       if (!(options.timeout_s > 0.0 && options.timeout_s <= 60.0)) {
         throw std::invalid_argument("--timeout must be in (0, 60] s, got " + text);
       }

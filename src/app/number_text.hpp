@@ -1,13 +1,11 @@
 // Numbers typed by a user on the command line.
 #pragma once
 
-#include <optional>
 #include <string>
 
-namespace cerebellum {
+#include "core/number_text.hpp"
 
-// the whole text as a finite number, or nothing (empty text, trailing characters, NaN, Inf)
-std::optional<double> finite_number(const std::string& text);
+namespace cerebellum {
 
 // an option's value as a finite number; throws std::invalid_argument
 // "<option>: '<text>' is not <accepted>" otherwise

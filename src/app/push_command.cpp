@@ -6,6 +6,7 @@
 #include <stdexcept>
 
 #include "app/sim_command_client.hpp"
+#include "core/number_text.hpp"
 #include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_sim_control/sim_command_text.hpp"
@@ -35,12 +36,7 @@ std::string usage() {
 }
 
 double number(const std::string& option, const std::string& text) {
-  try {
-    std::size_t used = 0;
-    const double value = std::stod(text, &used);
-    if (used == text.size() && std::isfinite(value)) return value;
-  } catch (const std::exception&) {
-  }
+  if (const std::optional<double> value = finite_number(text)) return *value;
   throw std::invalid_argument(option + " must be a finite number, got '" + text + "'");
 }
 

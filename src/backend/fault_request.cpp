@@ -7,6 +7,7 @@
 #include <sstream>
 
 #include "core/joint_layout.hpp"
+#include "core/number_text.hpp"
 
 namespace cerebellum {
 namespace {
@@ -59,22 +60,7 @@ const char* target_word(FaultTarget target) {
 }
 
 // 12 significant digits: what a person or a file writes reads back unchanged
-std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.12g", value);
-  return text;
-}
-
-std::optional<double> number(const std::string& word) {
-  try {
-    std::size_t used = 0;
-    const double value = std::stod(word, &used);
-    if (used != word.size() || !std::isfinite(value)) return std::nullopt;
-    return value;
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
+std::string format_number(double value) { return number_text(value, 12); }
 
 // "5" or "FR_knee" -> 0..11; "2" or "RR" -> 0..3 (legs)
 std::optional<int> motor_index(const std::string& word) {
@@ -84,7 +70,7 @@ std::optional<int> motor_index(const std::string& word) {
         return static_cast<int>(joint_index(leg, joint));
     }
   }
-  const std::optional<double> value = number(word);
+  const std::optional<double> value = finite_number(word);
   if (value && *value == std::floor(*value) && *value >= 0 && *value < static_cast<double>(kNumJoints)) {
     return static_cast<int>(*value);
   }
@@ -95,7 +81,7 @@ std::optional<int> leg_index(const std::string& word) {
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     if (word == kLegNames[leg]) return static_cast<int>(leg);
   }
-  const std::optional<double> value = number(word);
+  const std::optional<double> value = finite_number(word);
   if (value && *value == std::floor(*value) && *value >= 0 && *value < static_cast<double>(kNumLegs)) {
     return static_cast<int>(*value);
   }
@@ -135,7 +121,7 @@ FaultParse parse_fault(const std::vector<std::string>& all_words) {
   FaultRequest request;
   // a trailing "for SECONDS"
   if (words.size() >= 2 && words[words.size() - 2] == "for") {
-    const std::optional<double> duration = number(words.back());
+    const std::optional<double> duration = finite_number(words.back());
     if (!duration || !(*duration > 0.0 && *duration <= kDurationMaxS)) {
       return failure("for SECONDS must be in (0, " + format_number(kDurationMaxS) + "], got '" + clip(words.back()) +
                      "'");
@@ -217,7 +203,7 @@ FaultParse parse_fault(const std::vector<std::string>& all_words) {
     request.value = kind->fallback;
     return FaultParse{request, ""};
   }
-  const std::optional<double> value = number(words[next + 1]);
+  const std::optional<double> value = finite_number(words[next + 1]);
   if (!value || *value < kind->lower || *value > kind->upper) {
     return failure(head + " " + kind->word + " value must be a number in [" + format_number(kind->lower) + ", " +
                    format_number(kind->upper) + "], got '" + clip(words[next + 1]) + "'");

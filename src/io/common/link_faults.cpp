@@ -1,7 +1,7 @@
 #include "io/common/link_faults.hpp"
 
 #include <cmath>
-#include <cstdio>
+#include "core/number_text.hpp"
 
 namespace cerebellum {
 namespace {
@@ -9,22 +9,7 @@ namespace {
 constexpr std::size_t kDelayedMax = 4096;
 constexpr double kDelayMaxS = 10.0;
 
-std::optional<double> number(const std::string& word) {
-  try {
-    std::size_t used = 0;
-    const double value = std::stod(word, &used);
-    if (used != word.size() || !std::isfinite(value)) return std::nullopt;
-    return value;
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
-
-std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.12g", value);
-  return text;
-}
+std::string format_number(double value) { return number_text(value, 12); }
 
 }  // namespace
 
@@ -53,7 +38,7 @@ LinkFaultParse parse_link_fault(const std::vector<std::string>& words) {
   }
   if (words.size() != 4) return failure("link " + words[1] + " " + request.field + " takes one value");
   const double upper = probability ? 1.0 : kDelayMaxS;
-  const std::optional<double> value = number(words[3]);
+  const std::optional<double> value = finite_number(words[3]);
   if (!value || *value < 0.0 || *value > upper) {
     return failure("link " + request.field + " must be a number in [0, " + format_number(upper) + "], got '" +
                    words[3].substr(0, 32) + "'");

@@ -1,30 +1,16 @@
 #include "io/lcm_sim_control/sim_command_text.hpp"
 
 #include <cmath>
-#include <cstdio>
 #include <sstream>
 #include <vector>
+
+#include "core/number_text.hpp"
 
 namespace cerebellum {
 namespace {
 
-std::string format_number(double value) {
-  char text[32];
-  std::snprintf(text, sizeof text, "%.17g", value);
-  return text;
-}
-
-// a whole word as a finite number, or nullopt
-std::optional<double> number(const std::string& word) {
-  try {
-    std::size_t used = 0;
-    const double value = std::stod(word, &used);
-    if (used != word.size() || !std::isfinite(value)) return std::nullopt;
-    return value;
-  } catch (const std::exception&) {
-    return std::nullopt;
-  }
-}
+// 17 significant digits: a push reads back as the same doubles
+std::string format_number(double value) { return number_text(value, 17); }
 
 }  // namespace
 
@@ -64,7 +50,7 @@ SimCommand parse_sim_command(const std::string& text) {
   static const char* const kNames[] = {"FX", "FY", "FZ", "DURATION_S"};
   double values[4] = {};
   for (int k = 0; k < 4; ++k) {
-    const std::optional<double> value = number(words[k + 1]);
+    const std::optional<double> value = finite_number(words[k + 1]);
     if (!value) {
       command.error =
           std::string("push ") + kNames[k] + " must be a finite number, got '" + words[k + 1].substr(0, 32) + "'";
