@@ -5,6 +5,17 @@
 #include "safety/body_watch.hpp"
 
 namespace cerebellum {
+namespace {
+
+// what the response says while the health protection acts: EDAMP while it damps, ESTOP once the
+// motors are off; nothing without a protection
+std::optional<SwitchStatus> protection_status(const HealthVerdict& verdict) {
+  if (verdict.protection == Protection::Stopped) return SwitchStatus::EmergencyStop;
+  if (verdict.protecting()) return SwitchStatus::HighDamping;
+  return std::nullopt;
+}
+
+}  // namespace
 
 HighLevelMachine::HighLevelMachine(double tick_period_s, const HighLevelCommand& startup)
     : queue_(tick_period_s), startup_(startup) {}
@@ -119,10 +130,7 @@ void HighLevelMachine::observe_health(const HealthVerdict& verdict) {
     pending_protection_ = verdict.protection;
   }
   // reported at once, also while compute() is not called
-  if (verdict.protecting() && !handed_over_) {
-    status_.switch_status =
-        verdict.protection == Protection::Stopped ? SwitchStatus::EmergencyStop : SwitchStatus::HighDamping;
-  }
+  if (const std::optional<SwitchStatus> status = protection_status(verdict)) status_.switch_status = *status;
 }
 
 void HighLevelMachine::protect(const RobotState& state, Protection protection) {
@@ -281,7 +289,7 @@ void HighLevelMachine::update_status(const RobotState& state) {
     if (state.contact[leg] > 0.5) status_.contact |= 1 << leg;
   }
   status_.motor_faults = state.motor_faults;
-  const bool protection_stopped = health_.protection == Protection::Stopped;
+  const std::optional<SwitchStatus> protection = protection_status(health_);
   if (handed_over_) {
     // the MC commands nothing: no gait, no progress, no protective stop of its own; the body's
     // orientation is still watched so that a client sees a robot upside down
@@ -290,10 +298,7 @@ void HighLevelMachine::update_status(const RobotState& state) {
     status_.order_process_bar = 100;
     status_.ori_error = orientation_error(state) ? 1 : 0;
     status_.footpos_error = 0;
-    status_.switch_status = protection_stopped     ? SwitchStatus::EmergencyStop
-                            : health_.protecting() ? SwitchStatus::HighDamping
-                            : banned_              ? SwitchStatus::BanTransition
-                                                   : SwitchStatus::Done;
+    status_.switch_status = protection ? *protection : banned_ ? SwitchStatus::BanTransition : SwitchStatus::Done;
     return;
   }
   status_.mode = static_cast<int>(current_->id());
@@ -301,8 +306,7 @@ void HighLevelMachine::update_status(const RobotState& state) {
   status_.order_process_bar = current_->progress_percent();
   status_.ori_error = orientation_error_ ? 1 : 0;
   status_.footpos_error = foot_position_error_;
-  status_.switch_status = protection_stopped                 ? SwitchStatus::EmergencyStop
-                          : health_.protecting()             ? SwitchStatus::HighDamping
+  status_.switch_status = protection                         ? *protection
                           : orientation_error_               ? SwitchStatus::EmergencyStop
                           : foot_position_error_ != 0        ? SwitchStatus::HighDamping
                           : current_->damping_protection()   ? SwitchStatus::HighDamping

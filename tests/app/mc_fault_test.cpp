@@ -72,7 +72,16 @@ TEST(McFaults, ADisconnectedMotorWhileTrottingDampsLiesDownStopsAfterThreeSecond
   run.inject("motor FR_knee disconnected");
   const double injected_s = run.mc.backend().time_s();
   // the client keeps asking to trot: ignored while the fault lasts
-  run.run(trot, 5.0);
+  run.run(trot, 0.2);
+  // a new command is refused with the reason
+  run.run(high_level_command(ModeId::Locomotion, 3, 0.4), 0.1);
+  bool refused_for_the_motor = false;
+  while (const auto note = run.mc.machine().refusals().try_pop()) {
+    refused_for_the_motor |=
+        std::string(note->reason) == "motor error or warning: commands are ignored until it clears";
+  }
+  EXPECT_TRUE(refused_for_the_motor);
+  run.run(trot, 4.7);
   EXPECT_NEAR(run.seen(SwitchStatus::HighDamping) - injected_s, 0.0, 0.01);
   EXPECT_NEAR(run.seen(SwitchStatus::EmergencyStop) - injected_s, 3.0, 0.01);
   EXPECT_EQ(run.mc.machine().status().switch_status, SwitchStatus::EmergencyStop);
