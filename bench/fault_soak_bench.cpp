@@ -111,7 +111,13 @@ int main(int argc, char** argv) {
   const auto each_tick = [&](const CycleRecord& record) {
     ++ticks;
     if (!finite(record.command)) ++non_finite;
-    if (record.health.protecting() && !was_protecting) ++protections;
+    if (record.health.protecting() && !was_protecting) {
+      ++protections;
+      if (verbose) {
+        std::fprintf(stderr, "%.2f s: protection, causes 0x%02x\n", record.state.time_s,
+                     static_cast<unsigned>(record.health.causes));
+      }
+    }
     was_protecting = record.health.protecting();
   };
   const double end = mc.backend().time_s() + 60.0 * minutes;

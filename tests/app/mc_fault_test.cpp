@@ -89,7 +89,7 @@ TEST(McFaults, ADisconnectedMotorWhileTrottingDampsLiesDownStopsAfterThreeSecond
   EXPECT_EQ(run.mc.machine().status().motor_faults[0], kMotorOk);
   // lay down without a fall: on its belly, never tipped
   EXPECT_LT(run.height(), 0.15);
-  EXPECT_LT(run.max_tilt_rad, 0.8);
+  EXPECT_LT(run.max_tilt_rad, 0.6);  // no fall: the benchmarks' 34 degrees
   // the motors are off: the guard wrote the passive command
   const JointCommand& written = run.mc.loop().last_cycle().command;
   for (std::size_t i = 0; i < kNumJoints; ++i) {
@@ -146,7 +146,7 @@ TEST(McFaults, AStuckImuOnAWalkingRobotIsDetectedAndTheRobotLiesDown) {
   EXPECT_LT(run.seen(SwitchStatus::HighDamping) - injected_s, 0.2);
   EXPECT_TRUE(run.mc.loop().last_cycle().health.causes & kHealthImuStuck);
   EXPECT_LT(run.height(), 0.15);
-  EXPECT_LT(run.max_tilt_rad, 0.8);
+  EXPECT_LT(run.max_tilt_rad, 0.6);  // no fall: the benchmarks' 34 degrees
 }
 
 TEST(McFaults, AnImuThatSendsNaNIsNeverTurnedIntoACommand) {
@@ -156,7 +156,7 @@ TEST(McFaults, AnImuThatSendsNaNIsNeverTurnedIntoACommand) {
   EXPECT_TRUE(run.mc.loop().last_cycle().health.causes & kHealthStateInvalid);
   EXPECT_EQ(run.mc.loop().last_cycle().health.protection, Protection::Stopped);
   EXPECT_LT(run.height(), 0.15);
-  EXPECT_LT(run.max_tilt_rad, 0.8);
+  EXPECT_LT(run.max_tilt_rad, 0.6);  // no fall: the benchmarks' 34 degrees
 }
 
 TEST(McFaults, AProtectionWhileTheStateCannotBeTrustedIsReportedAndStopsTheRunningMode) {
@@ -171,7 +171,7 @@ TEST(McFaults, AProtectionWhileTheStateCannotBeTrustedIsReportedAndStopsTheRunni
   EXPECT_EQ(run.mc.machine().status().mode, 7);
   EXPECT_EQ(run.mc.machine().status().switch_status, SwitchStatus::Done);
   EXPECT_LT(run.height(), 0.15);
-  EXPECT_LT(run.max_tilt_rad, 0.8);
+  EXPECT_LT(run.max_tilt_rad, 0.6);  // no fall: the benchmarks' 34 degrees
 }
 
 }  // namespace
