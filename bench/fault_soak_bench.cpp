@@ -177,8 +177,10 @@ int main(int argc, char** argv) {
                    explained ? "a fault within 5 s" : "NO FAULT NEAR", safe ? "safe" : "NOT SAFE", gait, v.x(), v.y(),
                    v.z());
     }
-    // stood up again once the faults are over (the protection ignores commands until then)
+    // stood up again once the faults are over (the protection ignores commands until it has
+    // ended, 0.5 s after its last cause)
     mc.faults()->request(parse_fault("clear").request.value());
+    client.run(high_level_command(ModeId::PureDamper, 0), 0.6, each_tick);
     client.run(high_level_command(ModeId::RecoveryStand, 0), 8.0, each_tick);
     recovered += upright(mc.simulation().ground_truth()) && mc.machine().status().order_process_bar >= 95;
   }

@@ -181,8 +181,9 @@ void FaultInjectingBackend::apply_battery(SensorFrame& frame) {
   // the drivers see the bus voltage the battery reports
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     const std::uint32_t voltage_bits = kMotorUnderVoltage | kMotorOverVoltage;
-    frame.motor_faults[i] = (frame.motor_faults[i] & ~voltage_bits) |
-                            (motor_driver_faults(frame.temperature_c[i], battery.voltage_v) & voltage_bits);
+    const std::uint32_t reported =
+        motor_driver_faults(frame.temperature_c[i], battery.voltage_v, reported_faults_[i]) & voltage_bits;
+    frame.motor_faults[i] = (frame.motor_faults[i] & ~voltage_bits) | reported;
   }
 }
 

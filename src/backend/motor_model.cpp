@@ -20,12 +20,15 @@ double limit_motor_torque(double tau_nm, double qd_rad_s, const MotorLimits& lim
   return std::clamp(tau_nm, -available, available);
 }
 
-std::uint32_t motor_driver_faults(double temperature_c, double bus_voltage_v) {
+std::uint32_t motor_driver_faults(double temperature_c, double bus_voltage_v, std::uint32_t previous) {
   std::uint32_t faults = kMotorOk;
   if (temperature_c >= robot::kMotorWarningTemperatureC) faults |= kMotorTemperatureWarning;
   if (temperature_c >= robot::kMotorShutdownTemperatureC) faults |= kMotorOverTemperature;
-  if (bus_voltage_v < robot::kDriverUnderVoltageV) faults |= kMotorUnderVoltage;
-  if (bus_voltage_v > robot::kDriverOverVoltageV) faults |= kMotorOverVoltage;
+  const double hysteresis_v = robot::kDriverVoltageHysteresisV;
+  const double under_v = robot::kDriverUnderVoltageV + ((previous & kMotorUnderVoltage) ? hysteresis_v : 0.0);
+  const double over_v = robot::kDriverOverVoltageV - ((previous & kMotorOverVoltage) ? hysteresis_v : 0.0);
+  if (bus_voltage_v < under_v) faults |= kMotorUnderVoltage;
+  if (bus_voltage_v > over_v) faults |= kMotorOverVoltage;
   return faults;
 }
 

@@ -34,8 +34,10 @@ struct MotorThermalParameters {
 
 // what a driver reports of its own condition: the coil's warning (82 deg C) and shutdown
 // (87 deg C) temperatures, a bus voltage outside the driver's range (MotorFault bits); a driver
-// reporting an error stops driving its motor
-std::uint32_t motor_driver_faults(double temperature_c, double bus_voltage_v);
+// reporting an error stops driving its motor. A voltage limit that tripped (previous) clears only
+// once the voltage is back inside by the hysteresis: a sagging pack whose voltage recovers as soon
+// as the motors stop does not switch them on and off every step
+std::uint32_t motor_driver_faults(double temperature_c, double bus_voltage_v, std::uint32_t previous = kMotorOk);
 
 // copper loss heats the winding, conduction to ambient cools it
 class MotorThermalModel {

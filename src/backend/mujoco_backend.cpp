@@ -149,7 +149,7 @@ void MujocoBackend::update_power_and_heat(double dt_s) {
   battery_.update(motor_power_w, dt_s);
   const double bus_voltage_v = battery_.reading().voltage_v;
   for (std::size_t i = 0; i < kNumJoints; ++i) {
-    motor_faults_[i] = motor_driver_faults(thermal_[i].temperature_c(), bus_voltage_v);
+    motor_faults_[i] = motor_driver_faults(thermal_[i].temperature_c(), bus_voltage_v, motor_faults_[i]);
   }
 }
 

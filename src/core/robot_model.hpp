@@ -61,6 +61,7 @@ inline constexpr double kBatteryInternalResistanceOhm = 0.12;  // assumed: 6 cel
 inline constexpr double kIdleElectricalPowerW = 25.0;          // assumed: boards, sensors, fans
 inline constexpr double kDriverUnderVoltageV = 18.0;           // assumed: 3.0 V per cell
 inline constexpr double kDriverOverVoltageV = 26.0;            // assumed: above a full pack's 25.2 V
+inline constexpr double kDriverVoltageHysteresisV = 0.5;       // assumed: a tripped limit clears this far inside
 
 // whole-body figures the controllers use
 inline constexpr double kTotalMassKg = 8.52;  // body + legs + rotors of the MJCF model

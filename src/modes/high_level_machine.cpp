@@ -122,13 +122,9 @@ void HighLevelMachine::switch_to(Mode& mode, const RobotState& state, const High
 }
 
 void HighLevelMachine::observe_health(const HealthVerdict& verdict) {
+  // acted on in compute(); a protection lasts 0.5 s past its cause, so one that began while the
+  // state could not be trusted (compute() is not called then) is still on when it can be again
   health_ = verdict;
-  // remembered until the next tick with a valid state acts on it: a protection that began and
-  // ended while the state could not be trusted (compute() is not called then) still stops the
-  // running mode
-  if (verdict.protection == Protection::Stopped || (verdict.protecting() && pending_protection_ == Protection::None)) {
-    pending_protection_ = verdict.protection;
-  }
   // reported at once, also while compute() is not called
   if (const std::optional<SwitchStatus> status = protection_status(verdict)) status_.switch_status = *status;
 }
@@ -237,10 +233,7 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
     switch_to(*startup, state, startup_);
   }
   // the health protection first: what the client sends from now on meets the protected mode
-  if (pending_protection_ != Protection::None) {
-    protect(state, pending_protection_);
-    pending_protection_ = health_.protection;
-  }
+  if (health_.protecting()) protect(state, health_.protection);
   // client input of this tick, from the client holding the robot
   while (const auto input = inbox_.try_pop()) {
     if (holds_lease(*input)) take_input(*input);

@@ -108,14 +108,13 @@ class HighLevelMachine final : public OwnBehaviour {
   bool banned_ = false;  // the last command was refused: BAN_TRANS until the next accepted one
   CommandCounters counters_;
   LiftDetectorConfig lift_config_;
-  LiftWatch lift_watch_;                              // the lift decision's memory, reset on every mode switch
-  SafetyReport body_report_;                          // what safety/ found wrong this tick
-  HighLevelCommand running_command_;                  // what the current mode was entered or last updated with
-  HighLevelCommand resume_command_;                   // where a lifted robot goes once set down
-  bool orientation_error_ = false;                    // latched until a recovery stand starts
-  int foot_position_error_ = 0;                       // footpos_error bits, latched likewise
-  HealthVerdict health_;                              // the health protection of this tick
-  Protection pending_protection_ = Protection::None;  // the strongest one compute() has not acted on
+  LiftWatch lift_watch_;              // the lift decision's memory, reset on every mode switch
+  SafetyReport body_report_;          // what safety/ found wrong this tick
+  HighLevelCommand running_command_;  // what the current mode was entered or last updated with
+  HighLevelCommand resume_command_;   // where a lifted robot goes once set down
+  bool orientation_error_ = false;    // latched until a recovery stand starts
+  int foot_position_error_ = 0;       // footpos_error bits, latched likewise
+  HealthVerdict health_;              // the health protection of this tick
   SpscRing<RefusalNote, 16> refusals_;
   std::optional<HighLevelSource> holder_;
   double holder_last_s_ = 0.0;

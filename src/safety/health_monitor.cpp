@@ -50,12 +50,21 @@ HealthVerdict HealthMonitor::update(const RobotState& state) {
   }
 
   if (causes == kHealthOk) {
-    verdict_ = HealthVerdict{};
-    return verdict_;
+    if (!verdict_.protecting()) return verdict_;
+    // a cause that comes and goes (a sagging pack, a flickering sensor) keeps one protection,
+    // with its 3 s to the motors off, instead of starting a new one each time
+    if (healthy_since_s_ < 0.0) healthy_since_s_ = state.time_s;
+    if (state.time_s - healthy_since_s_ >= limits_.clear_after_s - 1e-9) {
+      verdict_ = HealthVerdict{};
+      healthy_since_s_ = -1.0;
+      return verdict_;
+    }
+  } else {
+    healthy_since_s_ = -1.0;
+    if (!verdict_.protecting()) protected_since_s_ = state.time_s;
+    verdict_.causes = causes;
+    verdict_.faulty_motors = faulty_motors;
   }
-  if (!verdict_.protecting()) protected_since_s_ = state.time_s;
-  verdict_.causes = causes;
-  verdict_.faulty_motors = faulty_motors;
   verdict_.protected_s = state.time_s - protected_since_s_;
   verdict_.protection = verdict_.protected_s >= limits_.stop_after_s - 1e-9 ? Protection::Stopped : Protection::Damping;
   return verdict_;

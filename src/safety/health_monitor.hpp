@@ -2,7 +2,8 @@
 // error or warning, a battery at its critical level, an IMU that froze, or a state the estimator
 // cannot trust for longer than a glitch -> high damping (the robot slowly lies down), and after
 // 3 s of it the motors are switched off (emergency stop). Commands are ignored while it lasts;
-// the causes clear by themselves when their conditions do (cyberdog2-highlevel.md section 5).
+// the causes clear by themselves when their conditions do (cyberdog2-highlevel.md section 5), and
+// the protection ends once none has been seen for 0.5 s.
 #pragma once
 
 #include <array>
@@ -30,13 +31,14 @@ struct HealthLimits {
   double battery_critical_percent = 5.0;  // at or below: protection
   double imu_stuck_after_s = 0.1;         // identical IMU samples for this long
   double state_invalid_after_s = 0.02;    // shorter gaps are damped by the guard alone
+  double clear_after_s = 0.5;             // a protection ends once every cause has been gone this long
 };
 
 struct HealthVerdict {
   Protection protection = Protection::None;
   std::uint32_t causes = kHealthOk;  // HealthCause bits of this tick
   std::uint32_t faulty_motors = 0;   // bit i: motor i reports an error or a warning
-  double protected_s = 0.0;          // how long the protection has lasted
+  double protected_s = 0.0;          // how long the protection has lasted (through short clear gaps)
 
   bool protecting() const { return protection != Protection::None; }
 };
@@ -53,6 +55,7 @@ class HealthMonitor {
   HealthLimits limits_;
   HealthVerdict verdict_;
   double protected_since_s_ = 0.0;
+  double healthy_since_s_ = -1.0;  // while protecting: since when no cause has been seen (< 0: one is)
   double invalid_since_s_ = -1.0;
   // the last IMU-derived sample and joint angles, and since when the IMU has not changed
   bool have_sample_ = false;

@@ -66,5 +66,13 @@ TEST(MotorDriverFaults, TheDriverWarnsAt82StopsAt87AndWatchesTheBusVoltage) {
   EXPECT_EQ(motor_driver_faults(30.0, 26.1), kMotorOverVoltage);
 }
 
+TEST(MotorDriverFaults, ATrippedVoltageLimitClearsOnlyHalfAVoltInside) {
+  EXPECT_EQ(motor_driver_faults(30.0, 18.2, kMotorUnderVoltage), kMotorUnderVoltage);
+  EXPECT_EQ(motor_driver_faults(30.0, 18.6, kMotorUnderVoltage), kMotorOk);
+  EXPECT_EQ(motor_driver_faults(30.0, 18.2, kMotorOk), kMotorOk);
+  EXPECT_EQ(motor_driver_faults(30.0, 25.8, kMotorOverVoltage), kMotorOverVoltage);
+  EXPECT_EQ(motor_driver_faults(30.0, 25.4, kMotorOverVoltage), kMotorOk);
+}
+
 }  // namespace
 }  // namespace cerebellum

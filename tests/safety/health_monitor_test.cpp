@@ -53,11 +53,13 @@ TEST(HealthMonitor, AMotorErrorDampsAtOnceAndStopsTheMotorsAfterThreeSeconds) {
   EXPECT_NEAR(verdict.protected_s, 2.996, 1e-9);
   verdict = run(monitor, 1599, 1601, faulty);
   EXPECT_EQ(verdict.protection, Protection::Stopped);
-  // the error clears by itself: so does the protection
-  verdict = monitor.update(live_state(1601));
+  // the error clears by itself: so does the protection, 0.5 s later
+  verdict = run(monitor, 1601, 1850, live_state);
+  EXPECT_EQ(verdict.protection, Protection::Stopped);
+  verdict = monitor.update(live_state(1851));
   EXPECT_EQ(verdict.protection, Protection::None);
   // a new fault starts a new 3 s
-  verdict = monitor.update(faulty(1602));
+  verdict = monitor.update(faulty(1852));
   EXPECT_EQ(verdict.protection, Protection::Damping);
   EXPECT_NEAR(verdict.protected_s, 0.0, 1e-12);
 }
@@ -85,9 +87,10 @@ TEST(HealthMonitor, ABatteryAtItsCriticalLevelProtectsAndOneAboveDoesNot) {
   state.battery = {true, std::nan(""), 2.0, 50.0};
   EXPECT_EQ(monitor.update(state).causes, kHealthBatteryReading);
   // no battery reading at all (a robot without one): nothing to protect from
+  HealthMonitor without_battery;
   state = live_state(3);
   state.battery = {false, 0.0, 0.0, 0.0};
-  EXPECT_EQ(monitor.update(state).protection, Protection::None);
+  EXPECT_EQ(without_battery.update(state).protection, Protection::None);
 }
 
 TEST(HealthMonitor, AStateInvalidForAGlitchIsLeftToTheGuardButLongerProtects) {
@@ -101,7 +104,22 @@ TEST(HealthMonitor, AStateInvalidForAGlitchIsLeftToTheGuardButLongerProtects) {
   // 20 ms = 10 ticks; the first 10 invalid ticks span 18 ms
   EXPECT_EQ(run(monitor, 10, 20, invalid).protection, Protection::None);
   EXPECT_EQ(monitor.update(invalid(20)).causes, kHealthStateInvalid);
-  EXPECT_EQ(monitor.update(live_state(21)).protection, Protection::None);
+  EXPECT_EQ(run(monitor, 21, 271, live_state).protection, Protection::Damping);
+  EXPECT_EQ(monitor.update(live_state(271)).protection, Protection::None);
+}
+
+TEST(HealthMonitor, ACauseThatComesAndGoesKeepsOneProtectionAndItsThreeSeconds) {
+  // a sagging pack: the drivers trip, the load falls, the voltage recovers, they trip again
+  HealthMonitor monitor;
+  const auto flickering = [](int tick) {
+    RobotState state = live_state(tick);
+    if (tick % 100 < 10) state.motor_faults[0] = kMotorUnderVoltage;
+    return state;
+  };
+  HealthVerdict verdict = run(monitor, 0, 1501, flickering);
+  EXPECT_EQ(verdict.protection, Protection::Stopped);
+  EXPECT_NEAR(verdict.protected_s, 3.0, 1e-9);
+  EXPECT_EQ(verdict.causes, kHealthMotorError);
 }
 
 TEST(HealthMonitor, AFrozenImuOnAMovingRobotIsStuckButAStillRobotIsNot) {
