@@ -37,15 +37,9 @@ std::string usage() {
          "          cerebellum fault imu stuck for 2;  cerebellum fault clear\n";
 }
 
-struct FaultOptions {
-  std::string text;  // the sim_command text
-  std::string url = HighLevelLcmConfig{}.odometry_url;
-  double timeout_s = 2.0;
-  bool help = false;
-};
-
-FaultOptions parse(const std::vector<std::string>& args) {
-  FaultOptions options;
+SimVerbRequest parse(const std::vector<std::string>& args) {
+  SimVerbRequest options;
+  options.url = HighLevelLcmConfig{}.odometry_url;
   std::vector<std::string> words;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
@@ -88,19 +82,6 @@ FaultOptions parse(const std::vector<std::string>& args) {
 
 }  // namespace
 
-int run_fault_command(const std::vector<std::string>& args) {
-  FaultOptions options;
-  try {
-    options = parse(args);
-  } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "cerebellum fault: %s\n%s", e.what(), usage().c_str());
-    return 2;
-  }
-  if (options.help) {
-    std::fputs(usage().c_str(), stdout);
-    return 0;
-  }
-  return send_sim_command(options.url, options.text, options.timeout_s, "fault");
-}
+int run_fault_command(const std::vector<std::string>& args) { return run_sim_verb("fault", args, parse, usage); }
 
 }  // namespace cerebellum

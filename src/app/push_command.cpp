@@ -80,21 +80,13 @@ PushOptions parse(const std::vector<std::string>& args) {
   return options;
 }
 
+SimVerbRequest push_request(const std::vector<std::string>& args) {
+  const PushOptions options = parse(args);
+  return {options.help ? "" : push_command_text(options.pulse), options.url, options.timeout_s, options.help};
+}
+
 }  // namespace
 
-int run_push_command(const std::vector<std::string>& args) {
-  PushOptions options;
-  try {
-    options = parse(args);
-  } catch (const std::invalid_argument& e) {
-    std::fprintf(stderr, "cerebellum push: %s\n%s", e.what(), usage().c_str());
-    return 2;
-  }
-  if (options.help) {
-    std::fputs(usage().c_str(), stdout);
-    return 0;
-  }
-  return send_sim_command(options.url, push_command_text(options.pulse), options.timeout_s, "push");
-}
+int run_push_command(const std::vector<std::string>& args) { return run_sim_verb("push", args, push_request, usage); }
 
 }  // namespace cerebellum

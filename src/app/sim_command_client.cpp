@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <optional>
 #include <random>
+#include <stdexcept>
 
 #include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_sim_control/sim_control_adapter.hpp"
@@ -47,6 +48,22 @@ int send_sim_command(const std::string& url, const std::string& text, double tim
     std::fprintf(stderr, "cerebellum %s: %s\n", verb, e.what());
     return 1;
   }
+}
+
+int run_sim_verb(const char* verb, const std::vector<std::string>& args,
+                 SimVerbRequest (*parse)(const std::vector<std::string>&), std::string (*usage)()) {
+  SimVerbRequest request;
+  try {
+    request = parse(args);
+  } catch (const std::invalid_argument& e) {
+    std::fprintf(stderr, "cerebellum %s: %s\n%s", verb, e.what(), usage().c_str());
+    return 2;
+  }
+  if (request.help) {
+    std::fputs(usage().c_str(), stdout);
+    return 0;
+  }
+  return send_sim_command(request.url, request.text, request.timeout_s, verb);
 }
 
 }  // namespace cerebellum
