@@ -11,6 +11,7 @@
 
 #include "app/cmd_options.hpp"
 #include "app/stop_signal.hpp"
+#include "io/common/motor_error_word.hpp"
 
 namespace cerebellum {
 namespace {
@@ -19,7 +20,6 @@ using Clock = std::chrono::steady_clock;
 using std::chrono::milliseconds;
 
 constexpr milliseconds kSlice{50};
-constexpr std::uint32_t kMotorHealthyWord = 0x80000000u;
 
 double seconds_since(Clock::time_point start) { return std::chrono::duration<double>(Clock::now() - start).count(); }
 
@@ -41,10 +41,15 @@ std::string describe(const robot_control_response_lcmt& r) {
   std::string motors;
   for (int i = 0; i < 12; ++i) {
     const auto word = static_cast<std::uint32_t>(r.motor_error[i]);
-    if (word == kMotorHealthyWord) continue;
+    if (word == kMotorErrorWordHealthy) continue;
     char motor[32];
     std::snprintf(motor, sizeof motor, " %d:0x%08x", i, word);
     motors += motor;
+    if (const std::string names = motor_fault_names(motor_faults_from_word(word)); !names.empty()) {
+      motors += " (";
+      motors += names;
+      motors += ')';
+    }
   }
   return out + (motors.empty() ? " motors ok" : " motor_error" + motors);
 }

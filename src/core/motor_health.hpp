@@ -3,7 +3,9 @@
 // joint_state_t.flags).
 #pragma once
 
+#include <cstddef>
 #include <cstdint>
+#include <string>
 
 namespace cerebellum {
 
@@ -25,6 +27,20 @@ inline constexpr std::uint32_t kMotorErrorBits = kMotorDisconnected | kMotorOver
                                                  kMotorUnderVoltage | kMotorOverVoltage | kMotorOverCurrent |
                                                  kMotorEncoderLost | kMotorOverload;
 inline constexpr std::uint32_t kMotorWarningBits = kMotorTemperatureWarning;
+
+// "over-temperature, temperature warning": the names of the set bits, for people
+inline std::string motor_fault_names(std::uint32_t faults) {
+  static constexpr const char* kNames[] = {"disconnected",  "over-temperature", "driver fault",
+                                           "under-voltage", "over-voltage",     "over-current",
+                                           "encoder lost",  "overload",         "temperature warning"};
+  std::string names;
+  for (std::size_t bit = 0; bit < sizeof kNames / sizeof kNames[0]; ++bit) {
+    if ((faults & (1u << bit)) == 0) continue;
+    if (!names.empty()) names += ", ";
+    names += kNames[bit];
+  }
+  return names;
+}
 
 // what the battery management system reports
 struct BatteryReading {

@@ -36,3 +36,16 @@ TEST(MotorErrorWord, EveryConditionTripsTheSdkExamplesMaskAndReadsBack) {
 
 }  // namespace
 }  // namespace cerebellum
+
+namespace cerebellum {
+namespace {
+
+TEST(MotorFaultNames, NameEachSetBitInOrder) {
+  EXPECT_EQ(motor_fault_names(kMotorOk), "");
+  EXPECT_EQ(motor_fault_names(kMotorOverTemperature | kMotorTemperatureWarning),
+            "over-temperature, temperature warning");
+  EXPECT_EQ(motor_fault_names(kMotorDisconnected | kMotorOverload), "disconnected, overload");
+}
+
+}  // namespace
+}  // namespace cerebellum
