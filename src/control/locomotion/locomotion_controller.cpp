@@ -276,6 +276,13 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
   } else if (ready) {
     next = pending_gait_;
     gait_change_pending_ = false;
+    // a stand holds the trunk where it came to rest, not where the commanded velocity would have
+    // taken it: the lag the walk left behind (up to max_position_lag_m) is not walked off on
+    // planted feet
+    if (to_stand) {
+      position_des_ = state.position_world.head<2>();
+      yaw_des_ = state.rpy.z();
+    }
   }
   // the variable-frequency trot steps faster as the commanded speed grows (a sideways step reaches
   // about a third as far as a forward one, so lateral speed counts three times; turning counts as
