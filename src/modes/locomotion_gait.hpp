@@ -41,6 +41,11 @@ class LocomotionGait {
   virtual ContactPlan contact_plan() const { return std::nullopt; }
   // another gait or mode takes over the robot
   virtual void stop() {}
+  // gaits that drive the same walking controller (the passive trot wraps the walking gaits) hand
+  // the robot over to each other mid-stride: take_over() continues from the running controller's
+  // state instead of start()'s reset, and the previous gait is not stopped
+  virtual const void* walking_controller() const { return this; }
+  virtual void take_over(const RobotState& state, const LocomotionCommand& command) { start(state, command); }
   // true while the gait has given up and damps the joints (its controller failed)
   virtual bool damping_protection() const { return false; }
   // order_process_bar while this gait runs

@@ -68,6 +68,11 @@ void LocomotionMode::update(const RobotState& state, const HighLevelCommand& com
     running_->update(clamped(command));
     return;
   }
+  if (next->walking_controller() == running_->walking_controller()) {
+    running_ = next;
+    running_->take_over(state, clamped(command));
+    return;
+  }
   running_->stop();
   running_ = next;
   running_->start(state, clamped(command));

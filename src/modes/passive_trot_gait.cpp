@@ -30,6 +30,12 @@ void PassiveTrotGait::start(const RobotState& state, const LocomotionCommand& co
   walking_.start(state, walking_command(state));
 }
 
+void PassiveTrotGait::take_over(const RobotState& state, const LocomotionCommand& command) {
+  command_ = command;
+  follow_.reset();
+  walking_.update(walking_command(state));
+}
+
 void PassiveTrotGait::stop() {
   walking_.stop();
   follow_.reset();

@@ -20,6 +20,8 @@ class PassiveTrotGait final : public LocomotionGait {
   void run(const RobotState& state, JointCommand& command) override;
   ContactPlan contact_plan() const override { return walking_.contact_plan(); }
   void stop() override;
+  const void* walking_controller() const override { return &walking_; }
+  void take_over(const RobotState& state, const LocomotionCommand& command) override;
   int progress_percent() const override { return 100; }
   bool damping_protection() const override { return walking_.failed(); }
 

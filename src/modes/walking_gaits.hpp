@@ -29,6 +29,8 @@ class WalkingGaits final : public LocomotionGait {
   void update(const LocomotionCommand& command) override;
   void run(const RobotState& state, JointCommand& command) override;
   void stop() override;
+  // the new gait's command for the running controller: it changes pattern where it can
+  void take_over(const RobotState& /*state*/, const LocomotionCommand& command) override { update(command); }
   ContactPlan contact_plan() const override { return plan_; }
   int progress_percent() const override { return 100; }
 
