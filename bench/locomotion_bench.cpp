@@ -230,14 +230,23 @@ Row soak_row(double minutes, unsigned seed) {
     const Eigen::Vector3d& v = walk.velocity;
     ++commands;
     bool up = true;
+    std::uint32_t causes = 0;  // of the health protection, for the log
     run.client.run(high_level_command(ModeId::Locomotion, gait, v.x(), v.y(), v.z()), hold(rng),
-                   [&](const CycleRecord&) { up &= upright(run.mc.simulation().ground_truth()); });
+                   [&](const CycleRecord& record) {
+                     up &= upright(run.mc.simulation().ground_truth());
+                     causes |= record.health.causes;
+                   });
     const HighLevelStatus& status = run.mc.machine().status();
     const bool walking = status.mode == static_cast<int>(ModeId::Locomotion) && status.gait_id == gait;
     if (up && walking) continue;
     up ? ++stops : ++falls;
-    std::fprintf(stderr, "soak: %s at %.1f s after gait %d v (%.2f, %.2f, %.2f)\n", up ? "stop" : "fall",
-                 run.mc.backend().time_s(), gait, v.x(), v.y(), v.z());
+    const CycleRecord& last = run.mc.loop().last_cycle();
+    const double hottest_c = *std::max_element(last.state.temperature_c.begin(), last.state.temperature_c.end());
+    std::fprintf(stderr,
+                 "soak: %s at %.1f s after gait %d v (%.2f, %.2f, %.2f); mode %d switch %d, health causes 0x%02x, "
+                 "hottest motor %.1f C\n",
+                 up ? "stop" : "fall", run.mc.backend().time_s(), gait, v.x(), v.y(), v.z(), status.mode,
+                 static_cast<int>(status.switch_status), static_cast<unsigned>(causes), hottest_c);
     run.client.run(high_level_command(ModeId::RecoveryStand, 0), 8.0);
     recovered += upright(run.mc.simulation().ground_truth()) && run.mc.machine().status().order_process_bar >= 95;
   }

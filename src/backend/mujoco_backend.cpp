@@ -2,6 +2,7 @@
 
 #include <mujoco/mujoco.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <stdexcept>
@@ -76,6 +77,7 @@ void MujocoBackend::find_model_elements() {
   data_->qpos[2] = config.initial_height_m;
   mj_forward(model_, data_);
   thermal_.assign(kNumJoints, MotorThermalModel(config.thermal));
+  bus_voltage_v_ = battery_.reading().voltage_v;
 }
 
 MujocoBackend::~MujocoBackend() {
@@ -147,9 +149,10 @@ void MujocoBackend::update_power_and_heat(double dt_s) {
     motor_power_w += motor_electrical_power_w(applied_torque_[i], data_->qvel[dof_address_[i]]);
   }
   battery_.update(motor_power_w, dt_s);
-  const double bus_voltage_v = battery_.reading().voltage_v;
+  // the drivers' bus capacitors smooth the pack's voltage before their limits look at it
+  bus_voltage_v_ += (battery_.reading().voltage_v - bus_voltage_v_) * std::min(1.0, dt_s / robot::kDriverBusFilterS);
   for (std::size_t i = 0; i < kNumJoints; ++i) {
-    motor_faults_[i] = motor_driver_faults(thermal_[i].temperature_c(), bus_voltage_v, motor_faults_[i]);
+    motor_faults_[i] = motor_driver_faults(thermal_[i].temperature_c(), bus_voltage_v_, motor_faults_[i]);
   }
 }
 

@@ -95,6 +95,7 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   std::vector<MotorThermalModel> thermal_;
   BatteryModel battery_;
   JointArray<std::uint32_t> motor_faults_{};  // what each driver reports (and stops on)
+  double bus_voltage_v_ = 0.0;                // the pack's voltage as the drivers see it (filtered)
   std::mt19937 rng_;
   std::normal_distribution<double> unit_normal_{0.0, 1.0};
   // push mailbox: written by any thread, read when the robot steps

@@ -62,6 +62,9 @@ inline constexpr double kIdleElectricalPowerW = 25.0;          // assumed: board
 inline constexpr double kDriverUnderVoltageV = 18.0;           // assumed: 3.0 V per cell
 inline constexpr double kDriverOverVoltageV = 26.0;            // assumed: above a full pack's 25.2 V
 inline constexpr double kDriverVoltageHysteresisV = 0.5;       // assumed: a tripped limit clears this far inside
+// assumed: the drivers' bus capacitors and trip debounce; a millisecond current spike of a
+// landing does not trip them, a sagging pack does
+inline constexpr double kDriverBusFilterS = 0.02;
 
 // whole-body figures the controllers use
 inline constexpr double kTotalMassKg = 8.52;  // body + legs + rotors of the MJCF model

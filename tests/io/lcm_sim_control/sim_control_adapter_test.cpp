@@ -147,8 +147,8 @@ TEST_F(SimControlLockstep, AFaultCommandReachesTheRobotAndTheMcProtectsIt) {
   ASSERT_TRUE(result);
   EXPECT_EQ(result->result, 0);
   EXPECT_EQ(result->reason, "taken: fault motor 7 disconnected for 1");
-  // the fault clears itself after 1 s, and so does the protection
-  run_for(1.0);
+  // the fault clears itself after 1 s, and the protection 0.5 s later
+  run_for(1.5);
   EXPECT_EQ(mc_.machine().status().motor_faults[7], kMotorOk);
   EXPECT_NE(mc_.machine().status().switch_status, SwitchStatus::HighDamping);
   send(12, "fault motor 12 disconnected");
