@@ -5,9 +5,7 @@
 #include <stdexcept>
 
 #include "app/sim_command_client.hpp"
-#include "core/number_text.hpp"
 #include "backend/fault_request.hpp"
-#include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_sim_control/sim_command_text.hpp"
 
@@ -43,28 +41,11 @@ SimVerbRequest parse(const std::vector<std::string>& args) {
   std::vector<std::string> words;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
-    const auto value = [&]() -> const std::string& {
-      if (i + 1 >= args.size()) throw std::invalid_argument(arg + " needs a value");
-      return args[++i];
-    };
-    if (arg == "--help" || arg == "-h") {
-      options.help = true;
-    } else if (arg == "--url") {
-      options.url = value();
-      if (const std::string problem = lcm_url_problem(options.url); !problem.empty()) {
-        throw std::invalid_argument("--url: " + problem);
-      }
-    } else if (arg == "--timeout") {
-      const std::string& text = value();
-      options.timeout_s = finite_number(text).value_or(-1.0);
-      if (!(options.timeout_s > 0.0 && options.timeout_s <= 60.0)) {
-        throw std::invalid_argument("--timeout must be in (0, 60] s, got " + text);
-      }
-    } else if (arg.size() > 2 && arg.compare(0, 2, "--") == 0) {
+    if (take_sim_verb_option(args, i, options)) continue;
+    if (arg.size() > 2 && arg.compare(0, 2, "--") == 0) {
       throw std::invalid_argument("unknown option '" + arg + "' (accepted: --url, --timeout)");
-    } else {
-      words.push_back(arg);
     }
+    words.push_back(arg);
   }
   if (options.help) return options;
   // the simulation's own grammar, applied before sending

@@ -7,7 +7,6 @@
 
 #include "app/sim_command_client.hpp"
 #include "core/number_text.hpp"
-#include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_sim_control/sim_command_text.hpp"
 
@@ -16,9 +15,7 @@ namespace {
 
 struct PushOptions {
   ForcePulse pulse{{0.0, 0.0, 0.0}, 0.2};
-  std::string url = HighLevelLcmConfig{}.odometry_url;  // where the simulation serves sim_command
-  double timeout_s = 2.0;
-  bool help = false;
+  SimVerbRequest request{"", HighLevelLcmConfig{}.odometry_url};  // where the simulation serves sim_command
 };
 
 std::string usage() {
@@ -45,24 +42,10 @@ PushOptions parse(const std::vector<std::string>& args) {
   std::vector<double> force;
   for (std::size_t i = 0; i < args.size(); ++i) {
     const std::string& arg = args[i];
-    const auto value = [&]() -> const std::string& {
+    if (take_sim_verb_option(args, i, options.request)) continue;
+    if (arg == "--duration") {
       if (i + 1 >= args.size()) throw std::invalid_argument(arg + " needs a value");
-      return args[++i];
-    };
-    if (arg == "--help" || arg == "-h") {
-      options.help = true;
-    } else if (arg == "--duration") {
-      options.pulse.duration_s = number(arg, value());
-    } else if (arg == "--url") {
-      options.url = value();
-      if (const std::string problem = lcm_url_problem(options.url); !problem.empty()) {
-        throw std::invalid_argument("--url: " + problem);
-      }
-    } else if (arg == "--timeout") {
-      options.timeout_s = number(arg, value());
-      if (!(options.timeout_s > 0.0 && options.timeout_s <= 60.0)) {
-        throw std::invalid_argument("--timeout must be in (0, 60] s, got " + args[i]);
-      }
+      options.pulse.duration_s = number(arg, args[++i]);
     } else if (arg.size() > 2 && arg.compare(0, 2, "--") == 0) {
       throw std::invalid_argument("unknown option '" + arg + "' (accepted: --duration, --url, --timeout)");
     } else {
@@ -70,7 +53,7 @@ PushOptions parse(const std::vector<std::string>& args) {
       force.push_back(number("force component " + std::to_string(force.size() + 1), arg));
     }
   }
-  if (options.help) return options;
+  if (options.request.help) return options;
   if (force.size() < 2) throw std::invalid_argument("give at least FX and FY (newtons)");
   for (std::size_t k = 0; k < force.size(); ++k) options.pulse.force_n[k] = force[k];
   // the simulation's own rules, applied before sending
@@ -81,8 +64,9 @@ PushOptions parse(const std::vector<std::string>& args) {
 }
 
 SimVerbRequest push_request(const std::vector<std::string>& args) {
-  const PushOptions options = parse(args);
-  return {options.help ? "" : push_command_text(options.pulse), options.url, options.timeout_s, options.help};
+  PushOptions options = parse(args);
+  if (!options.request.help) options.request.text = push_command_text(options.pulse);
+  return options.request;
 }
 
 }  // namespace

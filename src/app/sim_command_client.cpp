@@ -8,7 +8,9 @@
 #include <random>
 #include <stdexcept>
 
+#include "core/number_text.hpp"
 #include "io/lcm_common/lcm_url.hpp"
+#include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_sim_control/sim_control_adapter.hpp"
 #include "sim_command_lcmt.hpp"
 #include "sim_command_result_lcmt.hpp"
@@ -48,6 +50,31 @@ int send_sim_command(const std::string& url, const std::string& text, double tim
     std::fprintf(stderr, "cerebellum %s: %s\n", verb, e.what());
     return 1;
   }
+}
+
+bool take_sim_verb_option(const std::vector<std::string>& args, std::size_t& i, SimVerbRequest& request) {
+  const std::string& arg = args[i];
+  const auto value = [&]() -> const std::string& {
+    if (i + 1 >= args.size()) throw std::invalid_argument(arg + " needs a value");
+    return args[++i];
+  };
+  if (arg == "--help" || arg == "-h") {
+    request.help = true;
+  } else if (arg == "--url") {
+    request.url = value();
+    if (const std::string problem = lcm_url_problem(request.url); !problem.empty()) {
+      throw std::invalid_argument("--url: " + problem);
+    }
+  } else if (arg == "--timeout") {
+    const std::string& text = value();
+    request.timeout_s = finite_number(text).value_or(-1.0);
+    if (!(request.timeout_s > 0.0 && request.timeout_s <= 60.0)) {
+      throw std::invalid_argument("--timeout must be in (0, 60] s, got " + text);
+    }
+  } else {
+    return false;
+  }
+  return true;
 }
 
 int run_sim_verb(const char* verb, const std::vector<std::string>& args,

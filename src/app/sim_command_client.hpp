@@ -19,6 +19,10 @@ struct SimVerbRequest {
   bool help = false;
 };
 
+// the options every such verb takes: --help, --url URL, --timeout S (in (0, 60]); true when
+// args[i] was one (i then points at its last word); throws std::invalid_argument for a bad value
+bool take_sim_verb_option(const std::vector<std::string>& args, std::size_t& i, SimVerbRequest& request);
+
 // a verb of the simulation's channel: parse (throws std::invalid_argument: the message and the
 // usage on stderr, 2), --help (the usage on stdout, 0), else send_sim_command
 int run_sim_verb(const char* verb, const std::vector<std::string>& args,

@@ -176,26 +176,36 @@ TEST(McWalking, AZeroStepHeightWalksAtTheFiveMillimetreFloor) {
   EXPECT_LT(zero.highest_foot_clearance_m, 0.008);
 }
 
+// with sensor noise of the seed: up, a slow trot, then `walk` for walk_s, then the stand (1) for
+// 3 s; the lowest the trunk's up axis came (cos of its tilt) while standing
+double lowest_up_z_stopping_into_the_stand(unsigned seed, const HighLevelCommand& walk, double walk_s,
+                                           int* gait_after = nullptr) {
+  McConfig config = lying_start();
+  config.robot.noise.enabled = true;
+  config.robot.noise.seed = seed;
+  Mc mc = make_simulated_mc(config);
+  LockstepClient client(mc);
+  client.run(command(ModeId::RecoveryStand, 0), 3.0);
+  client.run(command(ModeId::Locomotion, 3), 1.0);
+  client.run(walk, walk_s);
+  double lowest_up_z = 1.0;
+  client.run(command(ModeId::Locomotion, 1), 3.0, [&](const CycleRecord&) {
+    const auto q = mc.simulation().ground_truth().quat;
+    lowest_up_z = std::min(lowest_up_z, 1.0 - 2.0 * (q[1] * q[1] + q[2] * q[2]));
+  });
+  const auto v = mc.simulation().ground_truth().velocity_world;
+  EXPECT_LT(std::hypot(v[0], v[1]), 0.05) << "seed " << seed << ": still moving";
+  if (gait_after != nullptr) *gait_after = mc.machine().status().gait_id;
+  return lowest_up_z;
+}
+
 TEST(McWalking, StoppingIntoTheStandAfterAFastTurningTrotHoldsTheTrunkWhereItCameToRest) {
   // the fault soak's first fall without a fault (seeds 6 and 8 of the sensor noise fell here): the
   // stand used to walk off the position lag the trot left behind on planted feet and tipped over
   for (unsigned seed : {6u, 8u}) {
-    McConfig config = lying_start();
-    config.robot.noise.enabled = true;
-    config.robot.noise.seed = seed;
-    Mc mc = make_simulated_mc(config);
-    LockstepClient client(mc);
-    client.run(command(ModeId::RecoveryStand, 0), 3.0);
-    client.run(command(ModeId::Locomotion, 3), 1.0);
-    client.run(high_level_command(ModeId::Locomotion, 26, 0.75, 0.59, -1.86), 2.8);
-    double lowest_up_z = 1.0;
-    client.run(command(ModeId::Locomotion, 1), 3.0, [&](const CycleRecord&) {
-      const auto q = mc.simulation().ground_truth().quat;
-      lowest_up_z = std::min(lowest_up_z, 1.0 - 2.0 * (q[1] * q[1] + q[2] * q[2]));
-    });
-    EXPECT_GT(lowest_up_z, std::cos(0.6)) << "seed " << seed;
-    const auto v = mc.simulation().ground_truth().velocity_world;
-    EXPECT_LT(std::hypot(v[0], v[1]), 0.05) << "seed " << seed;
+    const double up_z =
+        lowest_up_z_stopping_into_the_stand(seed, high_level_command(ModeId::Locomotion, 26, 0.75, 0.59, -1.86), 2.8);
+    EXPECT_GT(up_z, std::cos(0.6)) << "seed " << seed;
   }
 }
 
@@ -204,21 +214,11 @@ TEST(McWalking, TheStandTakesOverFromAMovingPassiveTrotWhereverItsFeetAre) {
   // from it and plants once the body has slowed, instead of restarting the controller mid-stride
   // (5 of these 10 seeded runs fell before)
   for (unsigned seed = 1; seed <= 10; ++seed) {
-    McConfig config = lying_start();
-    config.robot.noise.enabled = true;
-    config.robot.noise.seed = seed;
-    Mc mc = make_simulated_mc(config);
-    LockstepClient client(mc);
-    client.run(command(ModeId::RecoveryStand, 0), 3.0);
-    client.run(command(ModeId::Locomotion, 3), 1.0);
-    client.run(high_level_command(ModeId::Locomotion, 4, 0.64, 0.39, 0.02), 2.5);
-    double lowest_up_z = 1.0;
-    client.run(command(ModeId::Locomotion, 1), 3.0, [&](const CycleRecord&) {
-      const auto q = mc.simulation().ground_truth().quat;
-      lowest_up_z = std::min(lowest_up_z, 1.0 - 2.0 * (q[1] * q[1] + q[2] * q[2]));
-    });
-    EXPECT_GT(lowest_up_z, std::cos(0.6)) << "seed " << seed;
-    EXPECT_EQ(mc.machine().status().gait_id, 1);
+    int gait_after = 0;
+    const double up_z = lowest_up_z_stopping_into_the_stand(
+        seed, high_level_command(ModeId::Locomotion, 4, 0.64, 0.39, 0.02), 2.5, &gait_after);
+    EXPECT_GT(up_z, std::cos(0.6)) << "seed " << seed;
+    EXPECT_EQ(gait_after, 1);
   }
 }
 
