@@ -88,7 +88,10 @@ std::string telemetry_line(const TelemetryRow& row) {
   append_number(line, row.battery_soc_percent);
   append_number(line, row.battery_v);
   append_number(line, row.battery_a);
-  line += "," + std::to_string(row.health_causes) + "," + std::to_string(row.faulty_motors);
+  for (std::uint32_t bits : {row.health_causes, row.faulty_motors}) {
+    line += ',';
+    line += std::to_string(bits);
+  }
   return line;
 }
 
