@@ -82,18 +82,16 @@ void FaultInjectingBackend::set_slippery(int leg, bool on, double friction) {
   } else if (!std::isnan(slippery_until_s_[l])) {
     simulation_->reset_foot_friction(l);
   }
-  injected_.slippery_foot[l] = on;
   if (!on) slippery_until_s_[l] = std::numeric_limits<double>::quiet_NaN();
 }
 
 void FaultInjectingBackend::apply(const FaultRequest& request, double now_s) {
-  ++injected_.applied;
   const double until_s = until(now_s, request.duration_s);
   if (request.kind == FaultKind::Clear) {
     const bool all = request.target == FaultTarget::All;
     if (all || request.target == FaultTarget::Motor) {
       for (std::size_t i = 0; i < kNumJoints; ++i) {
-        if (all || static_cast<int>(i) == request.index) motors_[i] = MotorFault{};
+        if (all || static_cast<int>(i) == request.index) motors_[i] = InjectedMotorFault{};
       }
     }
     if (all || request.target == FaultTarget::Imu) imu_ = ImuFault{};
@@ -111,7 +109,7 @@ void FaultInjectingBackend::apply(const FaultRequest& request, double now_s) {
   switch (request.target) {
     case FaultTarget::Motor: {
       const auto i = static_cast<std::size_t>(request.index);
-      motors_[i] = MotorFault{request.kind, request.value, until_s, last_good_.q[i]};
+      motors_[i] = InjectedMotorFault{request.kind, request.value, until_s, last_good_.q[i]};
       break;
     }
     case FaultTarget::Imu:
@@ -143,8 +141,8 @@ void FaultInjectingBackend::apply(const FaultRequest& request, double now_s) {
 }
 
 void FaultInjectingBackend::expire(double now_s) {
-  for (MotorFault& motor : motors_) {
-    if (motor.kind != FaultKind::Clear && expired(motor.until_s, now_s)) motor = MotorFault{};
+  for (InjectedMotorFault& motor : motors_) {
+    if (motor.kind != FaultKind::Clear && expired(motor.until_s, now_s)) motor = InjectedMotorFault{};
   }
   if (imu_.kind != FaultKind::Clear && expired(imu_.until_s, now_s)) imu_ = ImuFault{};
   for (BatteryFault* fault : {&soc_, &drain_, &capacity_, &sag_}) {
@@ -195,8 +193,7 @@ SensorFrame FaultInjectingBackend::read() {
   const SensorFrame truth = frame;
   // motors
   for (std::size_t i = 0; i < kNumJoints; ++i) {
-    const MotorFault& motor = motors_[i];
-    injected_.motor[i] = motor.kind;
+    const InjectedMotorFault& motor = motors_[i];
     frame.motor_faults[i] |= reported_bits(motor.kind);
     switch (motor.kind) {
       case FaultKind::Disconnected:
@@ -216,7 +213,6 @@ SensorFrame FaultInjectingBackend::read() {
     }
   }
   // IMU
-  injected_.imu = imu_.kind;
   switch (imu_.kind) {
     case FaultKind::ImuBias:
       for (double& g : frame.imu_gyro) g += imu_.value;
@@ -237,7 +233,6 @@ SensorFrame FaultInjectingBackend::read() {
     default: break;
   }
   // battery
-  injected_.battery = soc_.active || drain_.active || capacity_.active || sag_.active;
   apply_battery(frame);
   reported_faults_ = frame.motor_faults;
   last_read_s_ = now_s;
@@ -255,7 +250,7 @@ SensorFrame FaultInjectingBackend::read() {
 void FaultInjectingBackend::write(const JointCommand& command) {
   JointCommand out = command;
   for (std::size_t i = 0; i < kNumJoints; ++i) {
-    const MotorFault& motor = motors_[i];
+    const InjectedMotorFault& motor = motors_[i];
     if (reported_faults_[i] & kMotorErrorBits) {
       // a driver in error has stopped its motor
       out.kp[i] = out.kd[i] = out.tau_ff[i] = out.qd_des[i] = 0.0;

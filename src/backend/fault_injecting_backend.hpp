@@ -25,15 +25,6 @@ struct TimedFault {
   FaultRequest request;
 };
 
-// what the decorator has injected, for telemetry and tests (loop thread)
-struct InjectedFaults {
-  JointArray<FaultKind> motor{};  // Clear: none
-  FaultKind imu = FaultKind::Clear;
-  bool battery = false;  // any battery fault
-  std::array<bool, kNumLegs> slippery_foot{};
-  std::uint64_t applied = 0;  // requests applied so far (scenario and run time)
-};
-
 class FaultInjectingBackend final : public RobotBackend {
  public:
   // simulation: the same robot's simulation handle for the physical faults (foot friction), or
@@ -48,11 +39,9 @@ class FaultInjectingBackend final : public RobotBackend {
 
   // any thread: queue a fault (or a clear) for the next tick; "" when taken, else why not
   std::string request(const FaultRequest& request);
-  // loop thread
-  const InjectedFaults& injected() const { return injected_; }
 
  private:
-  struct MotorFault {
+  struct InjectedMotorFault {
     FaultKind kind = FaultKind::Clear;
     double value = 0.0;
     double until_s = -1.0;  // < 0: until cleared
@@ -84,7 +73,7 @@ class FaultInjectingBackend final : public RobotBackend {
   std::mutex mailbox_mutex_;
   std::vector<FaultRequest> mailbox_;
   // the loop thread's faults
-  JointArray<MotorFault> motors_{};
+  JointArray<InjectedMotorFault> motors_{};
   ImuFault imu_;
   BatteryFault soc_, drain_, capacity_, sag_;
   std::array<double, kNumLegs> slippery_until_s_{};
@@ -93,7 +82,6 @@ class FaultInjectingBackend final : public RobotBackend {
   double last_read_s_ = 0.0;
   SensorFrame last_good_;  // the inner frame of the previous read
   JointArray<std::uint32_t> reported_faults_{};
-  InjectedFaults injected_;
 };
 
 }  // namespace cerebellum

@@ -70,17 +70,4 @@ HealthVerdict HealthMonitor::update(const RobotState& state) {
   return verdict_;
 }
 
-const char* health_cause_name(HealthCause cause) {
-  switch (cause) {
-    case kHealthOk: return "healthy";
-    case kHealthMotorError: return "motor error";
-    case kHealthMotorWarning: return "motor warning";
-    case kHealthBatteryCritical: return "battery critical";
-    case kHealthBatteryReading: return "battery reading not finite";
-    case kHealthImuStuck: return "IMU stuck";
-    case kHealthStateInvalid: return "state estimate invalid";
-  }
-  return "unknown";
-}
-
 }  // namespace cerebellum

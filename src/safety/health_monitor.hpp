@@ -65,7 +65,4 @@ class HealthMonitor {
   bool joints_moved_ = false;
 };
 
-// a short name of each cause set in causes ("motor error, battery critical"), for logs
-const char* health_cause_name(HealthCause cause);
-
 }  // namespace cerebellum

@@ -129,6 +129,19 @@ void LinkFaults::pass(const std::uint8_t* data, std::size_t size, double now_s, 
   deliver_now(bytes, settings, deliver);
 }
 
+void receive_through(LinkFaults* faults, const std::uint8_t* data, std::size_t size, double now_s,
+                     const LinkFaults::Deliver& deliver) {
+  if (faults == nullptr) {
+    deliver(data, size);
+  } else {
+    faults->pass(data, size, now_s, deliver);
+  }
+}
+
+void release_due(LinkFaults* faults, double now_s, const LinkFaults::Deliver& deliver) {
+  if (faults != nullptr) faults->release(now_s, deliver);
+}
+
 void LinkFaults::release(double now_s, const Deliver& deliver) {
   for (;;) {
     Delayed due;

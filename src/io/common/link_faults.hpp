@@ -31,8 +31,7 @@ struct LinkFaultSettings {
 
 struct LinkFaultRequest {
   Link link = Link::HighLevel;
-  LinkFaultSettings settings;  // the link's settings after the request (the others kept)
-  std::string field;           // "drop", "delay", "duplicate", "corrupt" or "clear"
+  std::string field;  // "drop", "delay", "duplicate", "corrupt" or "clear": the setting it changes
   double value = 0.0;
 };
 
@@ -81,6 +80,12 @@ class LinkFaults {
   std::mt19937 rng_;
   std::deque<Delayed> delayed_;
 };
+
+// the adapter thread: a packet that arrived, through the link's faults when it has any
+// (faults == nullptr: straight to deliver), and the delayed ones that are due
+void receive_through(LinkFaults* faults, const std::uint8_t* data, std::size_t size, double now_s,
+                     const LinkFaults::Deliver& deliver);
+void release_due(LinkFaults* faults, double now_s, const LinkFaults::Deliver& deliver);
 
 // one per interface, owned by the simulation command and lent to the adapters
 struct LinkFaultSet {

@@ -91,9 +91,8 @@ HighLevelInterfaceCounters LcmHighLevelAdapter::counters() const {
 void LcmHighLevelAdapter::step() {
   // everything that arrived, then what the loop queued
   handle_pending(*command_lcm_, 1);
-  if (LinkFaults* faults = link_faults_.load()) {
-    faults->release(wall_seconds(), [this](const std::uint8_t* data, std::size_t size) { handle_command(data, size); });
-  }
+  release_due(link_faults_.load(), wall_seconds(),
+              [this](const std::uint8_t* data, std::size_t size) { handle_command(data, size); });
   drain();
   keep_response_alive();
   log_refusals();
@@ -105,13 +104,8 @@ void LcmHighLevelAdapter::drain() {
 }
 
 void LcmHighLevelAdapter::on_command(const lcm::ReceiveBuffer* buffer, const std::string&) {
-  const auto* data = static_cast<const std::uint8_t*>(buffer->data);
-  if (LinkFaults* faults = link_faults_.load()) {
-    faults->pass(data, buffer->data_size, wall_seconds(),
-                 [this](const std::uint8_t* bytes, std::size_t size) { handle_command(bytes, size); });
-    return;
-  }
-  handle_command(data, buffer->data_size);
+  receive_through(link_faults_.load(), static_cast<const std::uint8_t*>(buffer->data), buffer->data_size,
+                  wall_seconds(), [this](const std::uint8_t* data, std::size_t size) { handle_command(data, size); });
 }
 
 void LcmHighLevelAdapter::handle_command(const std::uint8_t* data, std::size_t size) {

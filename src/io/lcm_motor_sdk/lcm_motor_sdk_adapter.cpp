@@ -51,10 +51,8 @@ MotorCtrlRejections LcmMotorSdkAdapter::rejections() const {
 
 void LcmMotorSdkAdapter::step() {
   handle_pending(*control_lcm_, 1);
-  if (LinkFaults* faults = link_faults_.load()) {
-    faults->release(wall_seconds(),
-                    [this](const std::uint8_t* data, std::size_t size) { handle_motor_ctrl(data, size); });
-  }
+  release_due(link_faults_.load(), wall_seconds(),
+              [this](const std::uint8_t* data, std::size_t size) { handle_motor_ctrl(data, size); });
   while (std::optional<Telemetry> telemetry = telemetry_.try_pop()) {
     publish(*telemetry);
     log_changes(telemetry->status);
@@ -67,13 +65,9 @@ void LcmMotorSdkAdapter::drain() {
 }
 
 void LcmMotorSdkAdapter::on_motor_ctrl(const lcm::ReceiveBuffer* buffer, const std::string&) {
-  const auto* data = static_cast<const std::uint8_t*>(buffer->data);
-  if (LinkFaults* faults = link_faults_.load()) {
-    faults->pass(data, buffer->data_size, wall_seconds(),
-                 [this](const std::uint8_t* bytes, std::size_t size) { handle_motor_ctrl(bytes, size); });
-    return;
-  }
-  handle_motor_ctrl(data, buffer->data_size);
+  receive_through(link_faults_.load(), static_cast<const std::uint8_t*>(buffer->data), buffer->data_size,
+                  wall_seconds(),
+                  [this](const std::uint8_t* data, std::size_t size) { handle_motor_ctrl(data, size); });
 }
 
 void LcmMotorSdkAdapter::handle_motor_ctrl(const std::uint8_t* data, std::size_t size) {

@@ -97,22 +97,15 @@ void UdpAliengoAdapter::step() {
     if (got < 0) break;  // EAGAIN: nothing more
     any = true;
     newest_sender_ = sender;
-    LinkFaults* faults = link_faults_.load();
     const auto size = static_cast<std::size_t>(got);
     // an oversized datagram (MSG_TRUNC) is refused as it is: only what fits is ever copied
-    if (faults == nullptr || size > buffer_.size()) {
-      handle_datagram(buffer_.data(), size, sender);
-    } else {
-      faults->pass(buffer_.data(), size, wall_seconds(),
-                   [&](const std::uint8_t* data, std::size_t length) { handle_datagram(data, length, sender); });
-    }
+    receive_through(size > buffer_.size() ? nullptr : link_faults_.load(), buffer_.data(), size, wall_seconds(),
+                    [&](const std::uint8_t* data, std::size_t length) { handle_datagram(data, length, sender); });
   }
-  if (LinkFaults* faults = link_faults_.load()) {
-    faults->release(wall_seconds(), [&](const std::uint8_t* data, std::size_t length) {
-      any = true;
-      handle_datagram(data, length, newest_sender_);
-    });
-  }
+  release_due(link_faults_.load(), wall_seconds(), [&](const std::uint8_t* data, std::size_t length) {
+    any = true;
+    handle_datagram(data, length, newest_sender_);
+  });
   if (!any && has_snapshot_) {
     submit(session_.on_silence(newest_.state, newest_.mc_mode, newest_.mc_progress, newest_.state.time_s),
            newest_.state.time_s);
