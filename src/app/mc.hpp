@@ -39,6 +39,7 @@ class Mc {
   ControlLoop& loop() { return loop_; }
   const McConfig& config() const { return config_; }
   const WalkingGaits& walking() const { return modes_.walking(); }
+  const ModeSet& modes() const { return modes_; }
 
  private:
   McConfig config_;

@@ -64,4 +64,11 @@ Eigen::Vector3d leg_gravity_torque(std::size_t leg, const Eigen::Vector3d& q, co
   return tau;
 }
 
+Eigen::Matrix3d leg_mass_jacobian(std::size_t leg, const Eigen::Vector3d& q) {
+  // holding torque for a unit gravity along axis k: -(sum m_i J_i)' e_k, the k-th row negated
+  Eigen::Matrix3d map;
+  for (int k = 0; k < 3; ++k) map.row(k) = -leg_gravity_torque(leg, q, Eigen::Vector3d::Unit(k)).transpose();
+  return map;
+}
+
 }  // namespace cerebellum

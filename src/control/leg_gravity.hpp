@@ -12,4 +12,9 @@ namespace cerebellum {
 // q: abad, hip, knee (SDK convention); gravity_body: gravity vector in the body frame (m/s^2)
 Eigen::Vector3d leg_gravity_torque(std::size_t leg, const Eigen::Vector3d& q, const Eigen::Vector3d& gravity_body);
 
+// sum over the leg's links of mass times the Jacobian of the link's centre of mass (body frame):
+// the leg's linear momentum relative to the trunk is this times the joint velocities. Read from
+// the gravity torques (they are its transpose applied to g), so the two share one mass model.
+Eigen::Matrix3d leg_mass_jacobian(std::size_t leg, const Eigen::Vector3d& q);
+
 }  // namespace cerebellum

@@ -188,7 +188,12 @@ void HighLevelMachine::watch_body(const RobotState& state) {
     return;
   }
   Mode* lifted = mode_for(static_cast<int>(ModeId::Lifted));
-  if (lifted != nullptr) body_report_.lifted = detect_lifted(state, lift_watch_, lift_config_);
+  // a jump leaves the ground on purpose: its watch starts afresh once it stands again
+  if (current_->airborne()) {
+    lift_watch_ = LiftWatch{};
+  } else if (lifted != nullptr) {
+    body_report_.lifted = detect_lifted(state, lift_watch_, lift_config_);
+  }
   if (body_report_.lifted) {
     resume_command_ = command_after_landing(running_command_);
     HighLevelCommand lift;
@@ -208,6 +213,10 @@ bool HighLevelMachine::apply(const RobotState& state, const HighLevelCommand& co
     return false;
   }
   if (const char* reason = protection_refusal(target->id())) {
+    refuse(command, reason);
+    return false;
+  }
+  if (const char* reason = target->start_refusal(state)) {
     refuse(command, reason);
     return false;
   }

@@ -14,6 +14,9 @@ class Mode {
   virtual ModeId id() const = 0;
   // nullptr when the command's gait and values suit this mode, else why it is refused
   virtual const char* check(const HighLevelCommand& command) const = 0;
+  // nullptr when the robot's state lets the mode start (or a new command of it take effect) now,
+  // else why not: a jump needs a still, level stand (safety/jump_gate)
+  virtual const char* start_refusal(const RobotState&) const { return nullptr; }
   // the mode takes over the robot
   virtual void enter(const RobotState& state, const HighLevelCommand& command) = 0;
   // another mode takes over the robot
@@ -33,6 +36,8 @@ class Mode {
   // true while the mode has given up its task and damps the joints so that the robot sinks down
   // (a walking gait whose MPC keeps failing): switch_status 3, EDAMP
   virtual bool damping_protection() const { return false; }
+  // true while the mode leaves the ground on purpose (a jump): feet without load are no lift
+  virtual bool airborne() const { return false; }
 };
 
 }  // namespace cerebellum

@@ -25,6 +25,13 @@ WalkingGaitsConfig walking_config(const ModeSetConfig& config) {
   return walking;
 }
 
+JumpControllerConfig jump_config(const ModeSetConfig& config) {
+  JumpControllerConfig jump = default_jump_controller_config();
+  jump.tick_s = config.loop_period_s;
+  jump.damping_kd = config.damping_kd;
+  return jump;
+}
+
 }  // namespace
 
 ModeSet::ModeSet(const ModeSetConfig& config)
@@ -36,7 +43,8 @@ ModeSet::ModeSet(const ModeSetConfig& config)
       user_gait_(walking_, user_gait_slot_),
       locomotion_(gaits_),
       motions_(config.motions),
-      motion_(motions_, {&pose_control_, &qp_stand_, &locomotion_, &recovery_stand_}, user_gait_slot_, user_gait_) {
+      motion_(motions_, {&pose_control_, &qp_stand_, &locomotion_, &recovery_stand_}, user_gait_slot_, user_gait_),
+      jump_(jump_config(config)) {
   // the stepping gaits of the table run on the MPC locomotion controller; the stands on the
   // configured one
   LocomotionGait& stand =
@@ -65,6 +73,7 @@ void ModeSet::add_to(HighLevelMachine& machine) {
   machine.add_mode(lifted_);
   machine.add_mode(locomotion_);
   machine.add_mode(motion_);
+  machine.add_mode(jump_);
 }
 
 }  // namespace cerebellum

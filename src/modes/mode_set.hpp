@@ -4,6 +4,7 @@
 
 #include "control/stand_up_controller.hpp"
 #include "modes/high_level_machine.hpp"
+#include "modes/jump_mode.hpp"
 #include "modes/lifted_mode.hpp"
 #include "modes/locomotion_stand.hpp"
 #include "modes/locomotion_mode.hpp"
@@ -47,6 +48,7 @@ class ModeSet {
   const PassiveTrotGait& passive_trot() const { return passive_trot_; }
   const MotionMode& motion() const { return motion_; }
   const UserGaitRunner& user_gait() const { return user_gait_; }
+  const JumpMode& jump() const { return jump_; }
   // where the high-level interface hands over a newly uploaded user gait (any thread)
   UserGaitSlot& user_gait_slot() { return user_gait_slot_; }
   // mode 11's gaits by id
@@ -68,6 +70,7 @@ class ModeSet {
   LocomotionMode locomotion_;
   MotionLibrary motions_;
   MotionMode motion_;
+  JumpMode jump_;
 };
 
 }  // namespace cerebellum

@@ -6,10 +6,12 @@
 
 namespace cerebellum {
 
-// the modes that stand on their feet (3, 11, 21 and the motions made of them): tipping over and
-// being picked up are watched
+// the modes that stand on their feet (3, 11, 21, the motions made of them, and the jumps, which
+// land on them): tipping over and being picked up are watched (a jump in the air is not lifted:
+// Mode::airborne)
 inline bool watches_body(ModeId mode) {
-  return mode == ModeId::QpStand || mode == ModeId::Locomotion || mode == ModeId::PoseControl || mode == ModeId::Motion;
+  return mode == ModeId::QpStand || mode == ModeId::Locomotion || mode == ModeId::PoseControl ||
+         mode == ModeId::Motion || mode == ModeId::Jump3d || mode == ModeId::ForceJump;
 }
 
 // the foot workspace is watched while walking: the other standing modes lift feet on purpose

@@ -1,0 +1,197 @@
+// Jumps (mode 16) over seeded runs with sensor noise: for each jump id, what it reached (trunk
+// displacement, turn, apex rise above the stand), the flight time, the landing impact (peak
+// vertical ground force summed over the feet, from the simulator's joint torques), the peak joint
+// torque and motor temperature rise, and falls; and the plan's compute time. Control runs on the
+// robot's own noisy estimate; the simulator's truth only scores. Prints a markdown table
+// (docs/jumps.md).
+//   jump_bench [--seeds=201-250] [--jumps=0,1,4] [--verbose]
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <string>
+#include <vector>
+
+#include "app/lockstep_client.hpp"
+#include "app/simulated_robot.hpp"
+#include "core/leg_kinematics.hpp"
+#include "core/orientation.hpp"
+#include "modes/jump_mode.hpp"
+#include "soak_support.hpp"
+
+namespace {
+
+using namespace cerebellum;
+
+struct Figures {
+  Eigen::Vector2d displacement_m = Eigen::Vector2d::Zero();  // heading frame at the start
+  double turn_rad = 0.0;
+  double apex_rise_m = 0.0;
+  double flight_s = 0.0;
+  double peak_force_n = 0.0;
+  double peak_torque_nm = 0.0;
+  double temperature_rise_c = 0.0;
+  bool fell = false;
+  bool stood = false;  // the response said 100 and the robot stands
+};
+
+Eigen::Vector3d rpy_of(const GroundTruth& g) {
+  return rpy_from_quaternion(Eigen::Quaterniond(g.quat[0], g.quat[1], g.quat[2], g.quat[3]));
+}
+
+// the vertical ground force on the feet: what the joint torques hold (statics), world frame
+double vertical_foot_force(const GroundTruth& g) {
+  const Eigen::Quaterniond body(g.quat[0], g.quat[1], g.quat[2], g.quat[3]);
+  double total = 0.0;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    if (!g.foot_contact[leg]) continue;
+    const std::size_t j = kJointsPerLeg * leg;
+    const Vec3 q(g.q[j], g.q[j + 1], g.q[j + 2]);
+    const Vec3 tau(g.tau[j], g.tau[j + 1], g.tau[j + 2]);
+    total += (body * -foot_force_from_torque(foot_jacobian(leg, q), tau)).z();
+  }
+  return total;
+}
+
+Figures run_jump(int id, long seed, bool verbose) {
+  Mc mc = make_simulated_mc(bench::soak_config(seed));
+  LockstepClient client(mc);
+  client.run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
+  client.run(high_level_command(ModeId::Locomotion, 1), 1.0);
+  const GroundTruth before = mc.simulation().ground_truth();
+  const double yaw0 = rpy_of(before).z();
+  JointArray<double> temperature_before = mc.loop().last_cycle().state.temperature_c;
+  Figures f;
+  bool in_air = false;
+  double left_ground_s = 0.0;
+  double end = mc.backend().time_s() + 6.0;
+  bool done = false;
+  const double start = mc.backend().time_s();
+  const HighLevelCommand command = high_level_command(ModeId::Jump3d, id);
+  client.run(command, 6.0, [&](const CycleRecord& record) {
+    const GroundTruth g = mc.simulation().ground_truth();
+    const Eigen::Vector3d rpy = rpy_of(g);
+    const bool airborne = std::none_of(g.foot_contact.begin(), g.foot_contact.end(), [](bool c) { return c; });
+    const double now = mc.backend().time_s();
+    if (airborne && !in_air) left_ground_s = now;
+    if (!airborne && in_air && now - left_ground_s > 0.03) f.flight_s = std::max(f.flight_s, now - left_ground_s);
+    in_air = airborne;
+    f.apex_rise_m = std::max(f.apex_rise_m, g.position[2] - before.position[2]);
+    f.peak_force_n = std::max(f.peak_force_n, vertical_foot_force(g));
+    f.fell |= std::abs(rpy.x()) > 1.0 || std::abs(rpy.y()) > 1.0 || g.position[2] < 0.1;
+    for (std::size_t j = 0; j < kNumJoints; ++j) {
+      f.peak_torque_nm = std::max(f.peak_torque_nm, std::abs(g.tau[j]));
+      f.temperature_rise_c = std::max(f.temperature_rise_c, record.state.temperature_c[j] - temperature_before[j]);
+    }
+    const HighLevelStatus& status = mc.machine().status();
+    if (verbose && static_cast<long>(std::lround((now - start) * 500)) % 10 == 0 && now - start < 1.5) {
+      const JumpController& jump = mc.modes().jump().controller();
+      std::printf("  t=%.3f %-8s mode=%d/%d bar=%3d x=%.3f y=%.3f z=%.3f roll=%.2f pitch=%.2f yaw=%.2f vz=%.2f contacts=%d%d%d%d\n",
+                  now - start, jump_phase_name(jump.phase()), status.mode, static_cast<int>(status.switch_status), status.order_process_bar, g.position[0] - before.position[0],
+                  g.position[1] - before.position[1], g.position[2], rpy.x(), rpy.y(), rpy.z() - yaw0,
+                  g.velocity_world[2], g.foot_contact[0], g.foot_contact[1], g.foot_contact[2], g.foot_contact[3]);
+    }
+    if (verbose && now - start < 0.0025) {
+      const JumpPlan& plan = mc.modes().jump().controller().plan();
+      std::printf("  plan: push %.3f s, trunk v (%.2f %.2f %.2f), com v (%.2f %.2f %.2f), flight %.3f s, K diag %.2f %.2f %.2f, "
+                  "yaw rate %.2f, foot offset %.3f, shortfall %s\n",
+                  plan.push_duration_s, plan.takeoff_velocity_m_s.x(), plan.takeoff_velocity_m_s.y(),
+                  plan.takeoff_velocity_m_s.z(), plan.com_takeoff_velocity_m_s.x(), plan.com_takeoff_velocity_m_s.y(),
+                  plan.com_takeoff_velocity_m_s.z(), plan.flight_duration_s, plan.momentum_map(0, 0),
+                  plan.momentum_map(1, 1), plan.momentum_map(2, 2), plan.yaw_rate_rad_s, plan.landing_foot_offset_m.norm(),
+                  jump_shortfall_text(plan.shortfall));
+    }
+    if (verbose && record.health.causes != 0) {
+      std::printf("  health causes %u motors %x battery %.2f V %.1f A faults FRk %x\n", record.health.causes,
+                  record.health.faulty_motors, record.state.battery.voltage_v, record.state.battery.current_a,
+                  record.state.motor_faults[2]);
+    }
+    if (!done && status.mode == static_cast<int>(ModeId::Jump3d) && status.order_process_bar == 100) done = true;
+  });
+  (void)end;
+  const GroundTruth after = mc.simulation().ground_truth();
+  const Eigen::Vector2d moved(after.position[0] - before.position[0], after.position[1] - before.position[1]);
+  f.displacement_m = Eigen::Rotation2Dd(-yaw0) * moved;
+  f.turn_rad = std::remainder(rpy_of(after).z() - yaw0, 2.0 * robot::kPi);
+  f.stood = done && !f.fell && after.position[2] > 0.2;
+  return f;
+}
+
+}  // namespace
+
+int main(int argc, char** argv) {
+  long first_seed = 201;
+  long last_seed = 250;
+  bool verbose = false;
+  std::vector<int> ids;
+  for (int i = 1; i < argc; ++i) {
+    const std::string arg = argv[i];
+    if (arg.rfind("--seeds=", 0) == 0) {
+      const std::string range = arg.substr(8);
+      const std::size_t dash = range.find('-');
+      first_seed = std::stol(range.substr(0, dash));
+      last_seed = dash == std::string::npos ? first_seed : std::stol(range.substr(dash + 1));
+    } else if (arg.rfind("--jumps=", 0) == 0) {
+      std::size_t pos = 8;
+      while (pos < arg.size()) {
+        const std::size_t comma = arg.find(',', pos);
+        ids.push_back(std::stoi(arg.substr(pos, comma - pos)));
+        pos = comma == std::string::npos ? arg.size() : comma + 1;
+      }
+    } else if (arg == "--verbose") {
+      verbose = true;
+    } else {
+      std::fprintf(stderr, "usage: jump_bench [--seeds=A-B] [--jumps=0,1,...] [--verbose]\n");
+      return 2;
+    }
+  }
+  if (ids.empty()) {
+    for (const JumpSpec& spec : kJump3dTable) ids.push_back(spec.gait_id);
+  }
+  std::printf(
+      "| jump | target | runs | reached: forward, left (m) | turn (deg) | apex rise (m) | flight (s) | "
+      "peak foot force (N) | peak torque (Nm) | temperature rise (deg C) | falls | stood |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|---|---|---|\n");
+  for (const int id : ids) {
+    const JumpSpec* spec = find_jump(id);
+    if (spec == nullptr) continue;
+    std::vector<Figures> runs;
+    for (long seed = first_seed; seed <= last_seed; ++seed) runs.push_back(run_jump(id, seed, verbose));
+    Figures mean;
+    Figures worst;
+    int falls = 0;
+    int stood = 0;
+    const double n = static_cast<double>(runs.size());
+    for (const Figures& f : runs) {
+      mean.displacement_m += f.displacement_m / n;
+      mean.turn_rad += f.turn_rad / n;
+      mean.apex_rise_m += f.apex_rise_m / n;
+      mean.flight_s += f.flight_s / n;
+      worst.peak_force_n = std::max(worst.peak_force_n, f.peak_force_n);
+      worst.peak_torque_nm = std::max(worst.peak_torque_nm, f.peak_torque_nm);
+      worst.temperature_rise_c = std::max(worst.temperature_rise_c, f.temperature_rise_c);
+      falls += f.fell ? 1 : 0;
+      stood += f.stood ? 1 : 0;
+    }
+    std::printf("| %d | %s | %zu | %.3f, %.3f | %.1f | %.3f | %.3f | %.0f | %.1f | %.2f | %d | %d |\n", id, spec->name,
+                runs.size(), mean.displacement_m.x(), mean.displacement_m.y(), mean.turn_rad * 180.0 / robot::kPi,
+                mean.apex_rise_m, mean.flight_s, worst.peak_force_n, worst.peak_torque_nm, worst.temperature_rise_c,
+                falls, stood);
+    std::fflush(stdout);
+  }
+  // the plan's compute time: it runs once, inside the tick that receives the command
+  std::vector<double> micros;
+  const JumpLimits limits = default_jump_controller_config().limits;
+  for (int i = 0; i < 2000; ++i) {
+    const JumpSpec& spec = kJump3dTable[static_cast<std::size_t>(i) % kJump3dTable.size()];
+    const auto t0 = std::chrono::steady_clock::now();
+    const JumpPlan plan = plan_jump(jump_target(spec), limits);
+    const auto t1 = std::chrono::steady_clock::now();
+    if (plan.push_duration_s <= 0.0) return 1;
+    micros.push_back(std::chrono::duration<double, std::micro>(t1 - t0).count());
+  }
+  std::sort(micros.begin(), micros.end());
+  std::printf("\nplan_jump compute time: p50 %.2f us, p99 %.2f us (%zu plans)\n", micros[micros.size() / 2],
+              micros[micros.size() * 99 / 100], micros.size());
+  return 0;
+}

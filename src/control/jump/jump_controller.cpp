@@ -1,0 +1,260 @@
+#include "control/jump/jump_controller.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/Geometry>
+#include <Eigen/LU>
+
+#include "control/leg_gravity.hpp"
+#include "control/stand_up_controller.hpp"
+#include "core/leg_kinematics.hpp"
+#include "core/robot_model.hpp"
+
+namespace cerebellum {
+namespace {
+
+using robot::kGravityMPerS2;
+
+Eigen::Vector3d leg_vector(const JointArray<double>& values, std::size_t leg) {
+  const std::size_t j = kJointsPerLeg * leg;
+  return {values[j], values[j + 1], values[j + 2]};
+}
+
+void set_leg(JointCommand& command, std::size_t leg, const Eigen::Vector3d& q, const Eigen::Vector3d& qd, double kp,
+             double kd, const Eigen::Vector3d& tau) {
+  for (std::size_t k = 0; k < kJointsPerLeg; ++k) {
+    const std::size_t j = kJointsPerLeg * leg + k;
+    const Eigen::Index e = static_cast<Eigen::Index>(k);
+    command.q_des[j] = q[e];
+    command.qd_des[j] = qd[e];
+    command.kp[j] = kp;
+    command.kd[j] = kd;
+    command.tau_ff[j] = tau[e];
+  }
+}
+
+}  // namespace
+
+JumpControllerConfig default_jump_controller_config() {
+  JumpControllerConfig config;
+  // the landing stand brakes harder than a standing robot is pushed around
+  config.stand.balance.max_position_acceleration = config.limits.landing_braking_m_s2;
+  return config;
+}
+
+const char* jump_phase_name(JumpPhase phase) {
+  switch (phase) {
+    case JumpPhase::Idle: return "idle";
+    case JumpPhase::Crouch: return "crouch";
+    case JumpPhase::Push: return "push";
+    case JumpPhase::Flight: return "flight";
+    case JumpPhase::Landing: return "landing";
+    case JumpPhase::Standing: return "standing";
+    case JumpPhase::Failed: return "failed";
+  }
+  return "?";
+}
+
+JumpController::JumpController(const JumpControllerConfig& config)
+    : config_(config), stand_(config.stand), distribution_(config.push_distribution) {}
+
+void JumpController::start(const RobotState& state, const JumpTarget& target) {
+  start(state, plan_jump(target, config_.limits));
+}
+
+void JumpController::start(const RobotState& state, const JumpPlan& plan) {
+  plan_ = plan;
+  phase_ = JumpPhase::Crouch;
+  start_s_ = phase_start_s_ = last_time_s_ = state.time_s;
+  takeoff_s_ = touchdown_s_ = 0.0;
+  centred_ = false;
+  stand_.start(state);
+  QpStandGoal crouch;
+  crouch.pose.position = {0.0, 0.0, plan_.crouch_height_m};
+  stand_.set_goal(crouch, PoseSpeed{1.0, 0.5, config_.crouch_duration_s}, config_.crouch_duration_s);
+}
+
+double JumpController::progress() const {
+  if (phase_ == JumpPhase::Idle) return 0.0;
+  if (finished()) return 1.0;
+  const double total = config_.crouch_duration_s + config_.crouch_settle_s + plan_.push_duration_s +
+                       plan_.flight_duration_s + config_.landing_brake_s + config_.landing_centre_s;
+  // the planned time; a late touchdown holds it below 1 until the stand
+  return std::min((last_time_s_ - start_s_) / total, 0.99);
+}
+
+void JumpController::begin_push(const RobotState& state) {
+  phase_ = JumpPhase::Push;
+  phase_start_s_ = state.time_s;
+  frame_.anchor(state);
+  Eigen::Vector3d velocity;
+  frame_.estimate(state, kAllLegs, push_origin_, velocity);
+  for (Eigen::Vector3d& force : forces_) force.setZero();
+}
+
+void JumpController::begin_flight(const RobotState& state) {
+  phase_ = JumpPhase::Flight;
+  phase_start_s_ = takeoff_s_ = state.time_s;
+  takeoff_q_ = state.q;
+}
+
+void JumpController::begin_landing(const RobotState& state) {
+  phase_ = JumpPhase::Landing;
+  phase_start_s_ = touchdown_s_ = state.time_s;
+  stand_.start(state);
+  QpStandGoal brake;
+  brake.pose.position = {0.0, 0.0, config_.limits.stand_height_m};
+  brake.hold_position_xy = false;
+  stand_.set_goal(brake, PoseSpeed{1.0, 0.5, config_.landing_brake_s}, config_.landing_brake_s);
+}
+
+void JumpController::compute(const RobotState& state, JointCommand& command) {
+  last_time_s_ = state.time_s;
+  const double t = state.time_s - phase_start_s_;
+  switch (phase_) {
+    case JumpPhase::Idle:
+    case JumpPhase::Standing: stand_.compute(state, command); return;
+    case JumpPhase::Crouch:
+      if (t >= config_.crouch_duration_s + config_.crouch_settle_s) {
+        begin_push(state);
+        push(state, command);
+        return;
+      }
+      stand_.compute(state, command);
+      return;
+    case JumpPhase::Push:
+      if (t >= plan_.push_duration_s) {
+        begin_flight(state);
+        fly(state, command);
+        return;
+      }
+      push(state, command);
+      return;
+    case JumpPhase::Flight:
+      if (touched_down(state)) {
+        begin_landing(state);
+        stand_.compute(state, command);
+        return;
+      }
+      fly(state, command);
+      return;
+    case JumpPhase::Landing:
+      if (landing_failed(state)) {
+        phase_ = JumpPhase::Failed;
+        break;
+      }
+      if (!centred_ && t >= config_.landing_brake_s) {
+        centred_ = true;
+        QpStandGoal centre;
+        centre.pose.position = {0.0, 0.0, config_.limits.stand_height_m};
+        stand_.set_goal(centre, PoseSpeed{1.0, 0.3, config_.landing_centre_s}, config_.landing_centre_s);
+      }
+      if (t >= config_.landing_brake_s + config_.landing_centre_s) phase_ = JumpPhase::Standing;
+      stand_.compute(state, command);
+      return;
+    case JumpPhase::Failed: break;
+  }
+  // failed: damp every joint, no stiffness, no torque
+  command = passive_command();
+  command.kd.fill(config_.damping_kd);
+}
+
+void JumpController::push(const RobotState& state, JointCommand& command) {
+  const double t = state.time_s - phase_start_s_;
+  const Eigen::Vector3d& a = plan_.push_acceleration_m_s2;
+  const Eigen::Vector3d position_des = push_origin_ + 0.5 * a * t * t;
+  const Eigen::Vector3d velocity_des = a * t;
+  const double yaw_acceleration = plan_.yaw_rate_rad_s / plan_.push_duration_s;
+  const Eigen::Vector3d rpy_des(0.0, 0.0, 0.5 * yaw_acceleration * t * t);
+  const Eigen::Vector3d omega_des(0.0, 0.0, yaw_acceleration * t);
+
+  Eigen::Vector3d position, velocity;
+  frame_.estimate(state, kAllLegs, position, velocity);
+  const Eigen::Matrix3d rotation = frame_.body_rotation(state);
+  const Eigen::Vector3d omega = frame_.angular_velocity(state);
+
+  const BalanceConfig& body = config_.stand.balance;
+  const Eigen::Vector3d acceleration = a + config_.push_kp.cwiseProduct(position_des - position) +
+                                       config_.push_kd.cwiseProduct(velocity_des - velocity);
+  const Eigen::Matrix3d rotation_des = rotation_from_rpy(rpy_des);
+  const Eigen::AngleAxisd rotation_error(rotation_des * rotation.transpose());
+  const Eigen::Vector3d angle_error = rotation_error.angle() * rotation_error.axis();
+  const Eigen::Vector3d angular_acceleration = Eigen::Vector3d(0.0, 0.0, yaw_acceleration) +
+                                               config_.push_orientation_kp.cwiseProduct(angle_error) +
+                                               config_.push_orientation_kd.cwiseProduct(omega_des - omega);
+  const Eigen::Matrix3d inertia = rotation * body.inertia_diag.asDiagonal() * rotation.transpose();
+  Vector6d wrench;
+  // the ground changes the robot's momentum, of which the trunk's acceleration carries K a
+  wrench.head<3>() = body.mass_kg * (plan_.momentum_map * acceleration + Eigen::Vector3d(0.0, 0.0, kGravityMPerS2));
+  wrench.tail<3>() = inertia * angular_acceleration;
+
+  std::array<Eigen::Vector3d, kNumLegs> feet_from_com{};
+  std::array<double, kNumLegs> force_limit{};
+  const Eigen::Vector3d com = rotation * body.com_in_body;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    feet_from_com[leg] = rotation * state.foot_position_body[leg] - com;
+    force_limit[leg] = config_.push_distribution.force_z_max_n;
+  }
+  std::array<Eigen::Vector3d, kNumLegs> solved{};
+  if (distribution_.solve(feet_from_com, force_limit, wrench, solved) == qp::QpStatus::Solved) forces_ = solved;
+
+  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravityMPerS2);
+  const Eigen::Matrix3d rotation_des_t = rotation_des.transpose();
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const Eigen::Vector3d q = leg_vector(state.q, leg);
+    const Eigen::Matrix3d jacobian = foot_jacobian(leg, q);
+    const Eigen::Vector3d tau = leg_gravity_torque(leg, q, gravity_body) - jacobian.transpose() * (rotation.transpose() * forces_[leg]);
+    // the joints follow the planned path too: the foot where it stands, seen from the planned trunk
+    const Eigen::Vector3d foot_body = rotation_des_t * (frame_.foothold(leg) - position_des);
+    const LegIkResult ik = inverse_kinematics_in_body(leg, foot_body);
+    // the foot stands still: its body-frame velocity is -R' v - omega x foot
+    const Eigen::Vector3d foot_velocity = -rotation_des_t * velocity_des - (rotation_des_t * omega_des).cross(foot_body);
+    Eigen::Vector3d qd = Eigen::Vector3d::Zero();
+    const Eigen::Matrix3d ik_jacobian = foot_jacobian(leg, ik.q);
+    if (std::abs(ik_jacobian.determinant()) > 1e-5) qd = ik_jacobian.inverse() * foot_velocity;
+    set_leg(command, leg, ik.q, qd, config_.push_joint_kp, config_.push_joint_kd, tau);
+  }
+}
+
+void JumpController::fly(const RobotState& state, JointCommand& command) {
+  const double t = state.time_s - phase_start_s_;
+  const double s = smooth_step(std::clamp(t / config_.swing_duration_s, 0.0, 1.0));
+  const Eigen::Matrix3d rotation = frame_.body_rotation(state);
+  // the landing pose: each foot below its stand position, ahead by the planned offset, at the
+  // touchdown height below the trunk, whatever the trunk's attitude
+  const Eigen::Vector3d offset(plan_.landing_foot_offset_m.x(), plan_.landing_foot_offset_m.y(), 0.0);
+  const Eigen::Vector3d stand_leg(robot::kStandPose[0], robot::kStandPose[1], robot::kStandPose[2]);
+  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravityMPerS2);
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    Eigen::Vector3d foot = rotation * foot_position_in_body(leg, stand_leg) + offset;
+    foot.z() = -config_.limits.touchdown_height_m + robot::kFootRadius;
+    const LegIkResult ik = inverse_kinematics_in_body(leg, rotation.transpose() * foot);
+    const Eigen::Vector3d from = leg_vector(takeoff_q_, leg);
+    const Eigen::Vector3d q = from + (ik.q - from) * s;
+    const Eigen::Vector3d tau = leg_gravity_torque(leg, leg_vector(state.q, leg), gravity_body);
+    set_leg(command, leg, q, Eigen::Vector3d::Zero(), config_.flight_joint_kp, config_.flight_joint_kd, tau);
+  }
+}
+
+bool JumpController::touched_down(const RobotState& state) const {
+  const double t = state.time_s - phase_start_s_;
+  if (t >= plan_.flight_duration_s + config_.touchdown_latest_extra_s) return true;
+  if (t < config_.touchdown_earliest_fraction * plan_.flight_duration_s) return false;
+  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravityMPerS2);
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const Eigen::Vector3d q = leg_vector(state.q, leg);
+    const Eigen::Vector3d tau = leg_vector(state.tau, leg) - leg_gravity_torque(leg, q, gravity_body);
+    const Eigen::Vector3d ground_reaction = -foot_force_from_torque(foot_jacobian(leg, q), tau);
+    if ((state.orientation * ground_reaction).z() > config_.touchdown_force_n) return true;
+  }
+  return false;
+}
+
+bool JumpController::landing_failed(const RobotState& state) const {
+  const bool tipped = std::max(std::abs(state.rpy.x()), std::abs(state.rpy.y())) > config_.failed_tilt_rad;
+  const bool sunk = stand_.controller().estimated_pose().position.z() < config_.failed_height_m;
+  return tipped || sunk;
+}
+
+}  // namespace cerebellum

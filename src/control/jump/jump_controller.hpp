@@ -1,0 +1,111 @@
+// A jump from a stand, as planned by plan_jump: crouch (the QP stand lowers the trunk), push
+// (the trunk accelerates along the planned straight line: ground forces for m (a + g) and the
+// turn, shared among the four feet by ForceDistribution, plus a soft joint PD along the same
+// path), flight (the legs swing to the landing pose, feet below the hips, ahead by the planned
+// offset), touchdown (foot force from the joint torques, or the planned time), landing (the QP
+// stand anchored at the new feet absorbs the fall and brakes the trunk, then centres it) and the
+// stand. A landing that goes wrong (trunk tilted or sunk past what a stand recovers) damps the
+// joints and says so: the state machine's usual protection and recovery stand take over.
+#pragma once
+
+#include <array>
+
+#include <Eigen/Core>
+
+#include "control/force_distribution.hpp"
+#include "control/jump/jump_plan.hpp"
+#include "control/qp_stand.hpp"
+#include "control/stance_frame.hpp"
+#include "core/robot_state.hpp"
+#include "core/types.hpp"
+
+namespace cerebellum {
+
+struct JumpControllerConfig {
+  JumpLimits limits;
+  double tick_s = 0.002;
+  double crouch_duration_s = 0.4;
+  double crouch_settle_s = 0.1;
+  // push: trunk tracking on top of the planned acceleration (per m, per m/s as accelerations)
+  Eigen::Vector3d push_kp{150.0, 150.0, 150.0};
+  Eigen::Vector3d push_kd{20.0, 20.0, 20.0};
+  Eigen::Vector3d push_orientation_kp{300.0, 300.0, 150.0};
+  Eigen::Vector3d push_orientation_kd{25.0, 25.0, 20.0};
+  ForceDistributionConfig push_distribution{0.75, 260.0,
+                                            (Vector6d() << 1.0, 1.0, 1.0, 40.0, 40.0, 40.0).finished(), 1e-4};
+  double push_joint_kp = 20.0;
+  double push_joint_kd = 0.5;
+  // flight: the legs swing to the landing pose in this time
+  double swing_duration_s = 0.12;
+  double flight_joint_kp = 50.0;
+  double flight_joint_kd = 1.2;
+  // touchdown: a foot carrying this much (from its joint torques) after this share of the flight
+  double touchdown_force_n = 30.0;
+  double touchdown_earliest_fraction = 0.5;
+  double touchdown_latest_extra_s = 0.15;  // past the planned touchdown: landed whatever the feet say
+  // landing: braking (no position hold) this long, then the trunk is centred over the feet
+  double landing_brake_s = 0.4;
+  double landing_centre_s = 0.6;
+  QpStandConfig stand;
+  // a landing past these has failed: damping
+  double failed_tilt_rad = 0.8;
+  double failed_height_m = 0.1;
+  double damping_kd = 4.0;
+};
+
+JumpControllerConfig default_jump_controller_config();
+
+enum class JumpPhase { Idle, Crouch, Push, Flight, Landing, Standing, Failed };
+
+const char* jump_phase_name(JumpPhase phase);
+
+class JumpController {
+ public:
+  explicit JumpController(const JumpControllerConfig& config = default_jump_controller_config());
+
+  // plan the jump and start crouching from the current stand
+  void start(const RobotState& state, const JumpTarget& target);
+  // start with a plan made elsewhere (the force jump plans from an acceleration)
+  void start(const RobotState& state, const JumpPlan& plan);
+  void compute(const RobotState& state, JointCommand& command);
+
+  JumpPhase phase() const { return phase_; }
+  // 0..1 across crouch, push, flight and landing (1 once it stands, or failed)
+  double progress() const;
+  bool finished() const { return phase_ == JumpPhase::Standing || phase_ == JumpPhase::Failed; }
+  bool failed() const { return phase_ == JumpPhase::Failed; }
+  // the jump is in the air or has just landed: the robot is not "lifted" and may leave its feet
+  bool airborne() const { return phase_ == JumpPhase::Push || phase_ == JumpPhase::Flight; }
+  const JumpPlan& plan() const { return plan_; }
+  const JumpControllerConfig& config() const { return config_; }
+  // time the trunk left the ground and touched down again (robot time), for reports
+  double takeoff_time_s() const { return takeoff_s_; }
+  double touchdown_time_s() const { return touchdown_s_; }
+
+ private:
+  void begin_push(const RobotState& state);
+  void begin_flight(const RobotState& state);
+  void begin_landing(const RobotState& state);
+  void push(const RobotState& state, JointCommand& command);
+  void fly(const RobotState& state, JointCommand& command);
+  bool touched_down(const RobotState& state) const;
+  bool landing_failed(const RobotState& state) const;
+
+  JumpControllerConfig config_;
+  JumpPlan plan_;
+  QpStand stand_;
+  StanceFrame frame_;
+  ForceDistribution distribution_;
+  JumpPhase phase_ = JumpPhase::Idle;
+  double phase_start_s_ = 0.0;
+  double start_s_ = 0.0;
+  double last_time_s_ = 0.0;
+  double takeoff_s_ = 0.0;
+  double touchdown_s_ = 0.0;
+  bool centred_ = false;
+  Eigen::Vector3d push_origin_ = Eigen::Vector3d::Zero();  // trunk at the push's start (stance frame)
+  JointArray<double> takeoff_q_{};
+  std::array<Eigen::Vector3d, kNumLegs> forces_{};
+};
+
+}  // namespace cerebellum

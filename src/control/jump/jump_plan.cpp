@@ -1,0 +1,129 @@
+#include "control/jump/jump_plan.hpp"
+
+#include <algorithm>
+#include <cmath>
+
+#include <Eigen/LU>
+
+#include "control/leg_gravity.hpp"
+#include "core/leg_kinematics.hpp"
+#include "core/robot_model.hpp"
+
+namespace cerebellum {
+namespace {
+
+using robot::kGravityMPerS2;
+
+// time from take-off until the trunk, rising at vz, comes down by drop_m (negative: rises)
+double flight_time_s(double vz, double drop_m) {
+  const double discriminant = vz * vz + 2.0 * kGravityMPerS2 * drop_m;
+  return (vz + std::sqrt(std::max(discriminant, 0.0))) / kGravityMPerS2;
+}
+
+// the momentum map with the feet below their stand positions, the trunk at this height
+Eigen::Matrix3d momentum_map_at_height(double height_m, double mass_kg) {
+  const Eigen::Vector3d stand(robot::kStandPose[0], robot::kStandPose[1], robot::kStandPose[2]);
+  std::array<Eigen::Vector3d, kNumLegs> q{};
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    Eigen::Vector3d foot = foot_position_in_body(leg, stand);
+    foot.z() = -height_m + robot::kFootRadius;
+    q[leg] = inverse_kinematics_in_body(leg, foot).q;
+  }
+  return standing_momentum_map(q, mass_kg);
+}
+
+}  // namespace
+
+Eigen::Matrix3d standing_momentum_map(const std::array<Eigen::Vector3d, 4>& leg_q, double mass_kg) {
+  Eigen::Matrix3d map = Eigen::Matrix3d::Identity();
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    // the foot stands still: J qd = -v
+    map -= leg_mass_jacobian(leg, leg_q[leg]) * foot_jacobian(leg, leg_q[leg]).inverse() / mass_kg;
+  }
+  return map;
+}
+
+Eigen::Vector2d planned_displacement(const JumpPlan& plan) {
+  return plan.push_stroke_m.head<2>() + plan.flight_travel_m.head<2>() + plan.landing_foot_offset_m;
+}
+
+JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
+  JumpPlan plan;
+  plan.crouch_height_m = limits.crouch_height_m;
+  plan.takeoff_height_m = limits.takeoff_height_m;
+  const double stroke_z = limits.takeoff_height_m - limits.crouch_height_m;
+  const double drop_m = limits.takeoff_height_m - (target.landing_ground_m + limits.touchdown_height_m);
+
+  // the trunk's take-off velocity that gives the centre of mass its own (near diagonal map)
+  const Eigen::Matrix3d momentum = momentum_map_at_height(limits.takeoff_height_m, limits.mass_kg);
+  // vertical: the apex the target asks for, at least the lowest hop and enough to reach a higher landing
+  const double rise_m = limits.stand_height_m + target.apex_rise_m - limits.takeoff_height_m;
+  double vz = std::max(limits.min_vertical_speed_m_s, std::sqrt(2.0 * kGravityMPerS2 * std::max(rise_m, 0.0)));
+  if (drop_m < 0.0) vz = std::max(vz, std::sqrt(-2.0 * kGravityMPerS2 * drop_m) + 0.3);
+  // the push's force and the legs' speed cap it
+  const double vz_force = std::sqrt(2.0 * stroke_z * momentum(2, 2) * std::max(limits.max_vertical_force_n / limits.mass_kg - kGravityMPerS2, 0.0));
+  if (vz > vz_force) {
+    vz = vz_force;
+    plan.shortfall |= kJumpForceLimited;
+  }
+  if (vz > limits.max_takeoff_speed_m_s) {
+    vz = limits.max_takeoff_speed_m_s;
+    plan.shortfall |= kJumpSpeedLimited;
+  }
+  const double trunk_vz = vz / momentum(2, 2);
+  const double push_s = 2.0 * stroke_z / trunk_vz;
+  const double flight_s = flight_time_s(vz, drop_m);
+  // trunk horizontal speed per centre-of-mass speed
+  const double horizontal_gain = 2.0 / (momentum(0, 0) + momentum(1, 1));
+
+  // horizontal: stroke + flight + braking after touchdown = distance, for the speed u:
+  // u^2 / (2 a_b) + u (stroke_z gain / trunk_vz + flight_s) = distance
+  const double distance = target.displacement_m.norm();
+  const Eigen::Vector2d direction =
+      distance > 1e-9 ? Eigen::Vector2d(target.displacement_m / distance) : Eigen::Vector2d::UnitX();
+  const double c = stroke_z * horizontal_gain / trunk_vz + flight_s;
+  const double braking = limits.landing_braking_m_s2;
+  double u = braking * (-c + std::sqrt(c * c + 2.0 * distance / braking));
+  const double u_speed = std::sqrt(std::max(limits.max_takeoff_speed_m_s * limits.max_takeoff_speed_m_s - vz * vz, 0.0));
+  if (u > u_speed) {
+    u = u_speed;
+    plan.shortfall |= kJumpSpeedLimited;
+  }
+  // |a_xy| <= mu (a_z + g) for the trunk, with a = v / push_s
+  const double u_friction = limits.friction_mu * (trunk_vz / push_s + kGravityMPerS2) * push_s / horizontal_gain;
+  if (u > u_friction) {
+    u = u_friction;
+    plan.shortfall |= kJumpFrictionLimited;
+  }
+
+  plan.push_duration_s = push_s;
+  plan.flight_duration_s = flight_s;
+  plan.com_takeoff_velocity_m_s = {u * direction.x(), u * direction.y(), vz};
+  plan.takeoff_velocity_m_s = momentum.inverse() * plan.com_takeoff_velocity_m_s;
+  plan.momentum_map = momentum;
+  plan.push_acceleration_m_s2 = plan.takeoff_velocity_m_s / push_s;
+  plan.push_stroke_m = plan.takeoff_velocity_m_s * (0.5 * push_s);
+  plan.flight_travel_m = {u * direction.x() * flight_s, u * direction.y() * flight_s, -drop_m};
+  plan.landing_foot_offset_m = direction * (u * u / (2.0 * braking));
+  plan.apex_height_m = limits.takeoff_height_m + vz * vz / (2.0 * kGravityMPerS2);
+  // the yaw turns at a constant rate from mid-push to touchdown
+  plan.yaw_rate_rad_s = target.yaw_rad / (0.5 * push_s + flight_s);
+  plan.planned_yaw_rad = target.yaw_rad;
+  plan.planned_displacement_m = planned_displacement(plan);
+  return plan;
+}
+
+const char* jump_shortfall_text(unsigned shortfall) {
+  switch (shortfall & 7u) {
+    case 0: return "";
+    case kJumpSpeedLimited: return "take-off speed";
+    case kJumpFrictionLimited: return "friction";
+    case kJumpForceLimited: return "leg force";
+    case kJumpSpeedLimited | kJumpFrictionLimited: return "take-off speed, friction";
+    case kJumpSpeedLimited | kJumpForceLimited: return "take-off speed, leg force";
+    case kJumpFrictionLimited | kJumpForceLimited: return "friction, leg force";
+    default: return "take-off speed, friction, leg force";
+  }
+}
+
+}  // namespace cerebellum

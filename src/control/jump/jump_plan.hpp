@@ -1,0 +1,85 @@
+// A jump planned from its target: the ballistic flight that carries the trunk from take-off to
+// touchdown, the straight constant-acceleration push-off that produces that take-off velocity
+// from a crouch, and where the feet land. Pure maths, frames at take-off: x forward along the
+// body's heading, y left, z up; heights are trunk heights above the ground.
+//
+// Push: the trunk moves on a straight line from the crouch (trunk over the feet) with constant
+// acceleration a for T_p; stroke s = v T_p / 2 where v is the take-off velocity, so s is parallel
+// to v and s_z = takeoff_height - crouch_height fixes T_p = 2 s_z / v_z.
+// Flight: z(t) = takeoff_height + v_z t - g t^2 / 2 down to the touchdown height.
+// Landing: the feet touch down ahead of the trunk by what the landing's braking will carry it.
+// Displacement = push stroke + flight + foot offset at touchdown (the stand ends centred over
+// the feet), and the yaw turns at a constant rate through half the push and all of the flight.
+#pragma once
+
+#include <array>
+
+#include <Eigen/Core>
+
+namespace cerebellum {
+
+struct JumpTarget {
+  Eigen::Vector2d displacement_m = Eigen::Vector2d::Zero();  // where the stand ends: forward, left
+  double yaw_rad = 0.0;                                      // turn, counter-clockwise positive
+  double apex_rise_m = 0.0;  // trunk apex above the stand height (0: the lowest hop that clears)
+  // ground height at the landing relative to the take-off (negative: a step down)
+  double landing_ground_m = 0.0;
+};
+
+struct JumpLimits {
+  double stand_height_m = 0.235;
+  double crouch_height_m = 0.15;
+  double takeoff_height_m = 0.26;
+  double touchdown_height_m = 0.25;  // trunk above the landing ground when the feet touch
+  double min_vertical_speed_m_s = 1.2;  // lowest hop: the legs swing to the landing pose in the air
+  double max_takeoff_speed_m_s = 2.6;   // centre of mass; the legs' extension speed (motors' speed-torque curve)
+  double friction_mu = 0.6;             // planned horizontal push within this share of the normal force
+  double max_vertical_force_n = 520.0;  // the four legs together at the push's knee angles
+  double mass_kg = 8.52;
+  double landing_braking_m_s2 = 6.0;  // horizontal deceleration the landing stand gives
+};
+
+// what stops a jump from reaching its target (bits; 0: reachable as planned)
+enum JumpShortfall : unsigned {
+  kJumpReachable = 0,
+  kJumpSpeedLimited = 1,     // take-off speed above what the legs can produce
+  kJumpFrictionLimited = 2,  // the push would slip
+  kJumpForceLimited = 4,     // the push needs more force than the legs have
+};
+
+struct JumpPlan {
+  double crouch_height_m = 0.0;
+  double takeoff_height_m = 0.0;
+  double push_duration_s = 0.0;
+  // the centre of mass's velocity at take-off (it flies the ballistic path) and the trunk's that
+  // carries it: the legs, half the robot's mass, are still at rest at their feet
+  Eigen::Vector3d com_takeoff_velocity_m_s = Eigen::Vector3d::Zero();
+  Eigen::Vector3d takeoff_velocity_m_s = Eigen::Vector3d::Zero();
+  Eigen::Matrix3d momentum_map = Eigen::Matrix3d::Identity();  // standing_momentum_map at take-off
+  Eigen::Vector3d push_acceleration_m_s2 = Eigen::Vector3d::Zero();  // constant, gravity not included
+  Eigen::Vector3d push_stroke_m = Eigen::Vector3d::Zero();           // trunk travel during the push
+  double yaw_rate_rad_s = 0.0;                                       // at take-off
+  double flight_duration_s = 0.0;
+  Eigen::Vector3d flight_travel_m = Eigen::Vector3d::Zero();  // trunk, take-off to touchdown
+  Eigen::Vector2d landing_foot_offset_m = Eigen::Vector2d::Zero();  // feet ahead of the trunk at touchdown
+  double apex_height_m = 0.0;  // trunk above the take-off ground
+  unsigned shortfall = kJumpReachable;
+  // what the plan reaches (equals the target when shortfall is 0)
+  Eigen::Vector2d planned_displacement_m = Eigen::Vector2d::Zero();
+  double planned_yaw_rad = 0.0;
+};
+
+JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits);
+
+// the robot's linear momentum per unit mass when the trunk moves at v (level, not turning) and
+// every foot stands still: K v, K = I - (1 / M) sum_legs leg_mass_jacobian J_foot^-1, for the legs at
+// these joint angles (abad, hip, knee per leg)
+Eigen::Matrix3d standing_momentum_map(const std::array<Eigen::Vector3d, 4>& leg_q, double mass_kg);
+
+// what a plan reaches: the displacement its stroke, flight and landing offset add up to
+Eigen::Vector2d planned_displacement(const JumpPlan& plan);
+
+// a text naming the shortfall bits ("take-off speed, friction"), "" for none; static storage
+const char* jump_shortfall_text(unsigned shortfall);
+
+}  // namespace cerebellum
