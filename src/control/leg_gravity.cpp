@@ -1,5 +1,7 @@
 #include "control/leg_gravity.hpp"
 
+#include <array>
+
 #include <Eigen/Geometry>
 
 #include "core/joint_layout.hpp"
@@ -17,7 +19,20 @@ struct PointMass {
 
 }  // namespace
 
-Eigen::Vector3d leg_gravity_torque(std::size_t leg, const Eigen::Vector3d& q, const Eigen::Vector3d& gravity_body) {
+namespace {
+
+// each mass of the leg in the body frame, with the joints that move it, and the joint origins
+struct Placed {
+  double mass_kg;
+  Eigen::Vector3d position;
+  int moved_by;  // 1: abad only, 2: abad and hip, 3: all three
+};
+struct PlacedLeg {
+  std::array<Placed, kLegPointMasses> masses;
+  Eigen::Vector3d o_abad, o_hip, o_knee, axis_pitch;
+};
+
+PlacedLeg place_leg(std::size_t leg, const Eigen::Vector3d& q) {
   // the published centres are for a right leg: left legs mirror y
   const double side = leg_side_sign(leg);
   const auto link = [side](double x, double y_right, double z) { return Eigen::Vector3d(x, -side * y_right, z); };
@@ -34,32 +49,40 @@ Eigen::Vector3d leg_gravity_torque(std::size_t leg, const Eigen::Vector3d& q, co
   const Eigen::Matrix3d r_abad = Eigen::AngleAxisd(q.x(), Eigen::Vector3d::UnitX()).toRotationMatrix();
   const Eigen::Matrix3d r_thigh = r_abad * Eigen::AngleAxisd(q.y(), Eigen::Vector3d::UnitY()).toRotationMatrix();
   const Eigen::Matrix3d r_shank = r_thigh * Eigen::AngleAxisd(q.z(), Eigen::Vector3d::UnitY()).toRotationMatrix();
-  const Eigen::Vector3d o_abad = hip_position(leg);
-  const Eigen::Vector3d o_hip = o_abad + r_abad * Eigen::Vector3d(0.0, side * robot::kAbadLength, 0.0);
-  const Eigen::Vector3d o_knee = o_hip + r_thigh * Eigen::Vector3d(0.0, 0.0, -robot::kThighLength);
-  const Eigen::Vector3d axis_abad = Eigen::Vector3d::UnitX();
-  const Eigen::Vector3d axis_pitch = r_abad * Eigen::Vector3d::UnitY();  // hip and knee
+  PlacedLeg placed;
+  placed.o_abad = hip_position(leg);
+  placed.o_hip = placed.o_abad + r_abad * Eigen::Vector3d(0.0, side * robot::kAbadLength, 0.0);
+  placed.o_knee = placed.o_hip + r_thigh * Eigen::Vector3d(0.0, 0.0, -robot::kThighLength);
+  placed.axis_pitch = r_abad * Eigen::Vector3d::UnitY();  // hip and knee
+  placed.masses = {{
+      {abad_link.mass_kg, placed.o_abad + r_abad * abad_link.com, 1},
+      {hip_rotor.mass_kg, placed.o_abad + r_abad * hip_rotor.com, 1},
+      {thigh.mass_kg, placed.o_hip + r_thigh * thigh.com, 2},
+      {knee_rotor.mass_kg, placed.o_hip + r_thigh * knee_rotor.com, 2},
+      {shank.mass_kg, placed.o_knee + r_shank * shank.com, 3},
+  }};
+  return placed;
+}
 
-  // each mass: its position and the joints that move it
-  struct Placed {
-    double mass_kg;
-    Eigen::Vector3d position;
-    int moved_by;  // 1: abad only, 2: abad and hip, 3: all three
-  };
-  const Placed masses[] = {
-      {abad_link.mass_kg, o_abad + r_abad * abad_link.com, 1},
-      {hip_rotor.mass_kg, o_abad + r_abad * hip_rotor.com, 1},
-      {thigh.mass_kg, o_hip + r_thigh * thigh.com, 2},
-      {knee_rotor.mass_kg, o_hip + r_thigh * knee_rotor.com, 2},
-      {shank.mass_kg, o_knee + r_shank * shank.com, 3},
-  };
+}  // namespace
+
+std::array<LegPointMass, kLegPointMasses> leg_point_masses(std::size_t leg, const Eigen::Vector3d& q) {
+  const PlacedLeg placed = place_leg(leg, q);
+  std::array<LegPointMass, kLegPointMasses> masses{};
+  for (std::size_t i = 0; i < kLegPointMasses; ++i) masses[i] = {placed.masses[i].mass_kg, placed.masses[i].position};
+  return masses;
+}
+
+Eigen::Vector3d leg_gravity_torque(std::size_t leg, const Eigen::Vector3d& q, const Eigen::Vector3d& gravity_body) {
+  const PlacedLeg placed = place_leg(leg, q);
+  const Eigen::Vector3d axis_abad = Eigen::Vector3d::UnitX();
   // holding torque = -(generalised gravity force) = -sum m g . (axis x (p - o))
   Eigen::Vector3d tau = Eigen::Vector3d::Zero();
-  for (const Placed& m : masses) {
+  for (const Placed& m : placed.masses) {
     const Eigen::Vector3d weight = m.mass_kg * gravity_body;
-    tau.x() -= weight.dot(axis_abad.cross(m.position - o_abad));
-    if (m.moved_by >= 2) tau.y() -= weight.dot(axis_pitch.cross(m.position - o_hip));
-    if (m.moved_by >= 3) tau.z() -= weight.dot(axis_pitch.cross(m.position - o_knee));
+    tau.x() -= weight.dot(axis_abad.cross(m.position - placed.o_abad));
+    if (m.moved_by >= 2) tau.y() -= weight.dot(placed.axis_pitch.cross(m.position - placed.o_hip));
+    if (m.moved_by >= 3) tau.z() -= weight.dot(placed.axis_pitch.cross(m.position - placed.o_knee));
   }
   return tau;
 }

@@ -3,6 +3,7 @@
 // (robot-cyberdog2.md; right-leg values, y mirrored for left legs; rotors as point masses).
 #pragma once
 
+#include <array>
 #include <cstddef>
 
 #include <Eigen/Core>
@@ -11,6 +12,14 @@ namespace cerebellum {
 
 // q: abad, hip, knee (SDK convention); gravity_body: gravity vector in the body frame (m/s^2)
 Eigen::Vector3d leg_gravity_torque(std::size_t leg, const Eigen::Vector3d& q, const Eigen::Vector3d& gravity_body);
+
+// the leg's links and rotors as point masses, centres in the body frame
+inline constexpr std::size_t kLegPointMasses = 5;
+struct LegPointMass {
+  double mass_kg;
+  Eigen::Vector3d position;
+};
+std::array<LegPointMass, kLegPointMasses> leg_point_masses(std::size_t leg, const Eigen::Vector3d& q);
 
 // sum over the leg's links of mass times the Jacobian of the link's centre of mass (body frame):
 // the leg's linear momentum relative to the trunk is this times the joint velocities. Read from

@@ -69,9 +69,15 @@ void JumpController::start(const RobotState& state, const JumpPlan& plan) {
   start_s_ = phase_start_s_ = last_time_s_ = state.time_s;
   takeoff_s_ = touchdown_s_ = 0.0;
   centred_ = false;
+  // the feet land where they stood, seen from the trunk: the stand ends as far from them as it began
+  StanceFrame level;
+  level.anchor(state);
+  const Eigen::Vector3d rpy = level.body_rpy(state);
+  const Eigen::Matrix3d tilt = rotation_from_rpy(Eigen::Vector3d(rpy.x(), rpy.y(), 0.0));
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) stand_feet_[leg] = tilt * state.foot_position_body[leg];
   stand_.start(state);
   QpStandGoal crouch;
-  crouch.pose.position = {0.0, 0.0, plan_.crouch_height_m};
+  crouch.pose.position = {plan_.crouch_offset_m.x(), plan_.crouch_offset_m.y(), plan_.crouch_height_m};
   stand_.set_goal(crouch, PoseSpeed{1.0, 0.5, config_.crouch_duration_s}, config_.crouch_duration_s);
 }
 
@@ -124,7 +130,7 @@ void JumpController::compute(const RobotState& state, JointCommand& command) {
       stand_.compute(state, command);
       return;
     case JumpPhase::Push:
-      if (t >= plan_.push_duration_s) {
+      if (push_done(state, t)) {
         begin_flight(state);
         fly(state, command);
         return;
@@ -165,9 +171,13 @@ void JumpController::push(const RobotState& state, JointCommand& command) {
   const Eigen::Vector3d& a = plan_.push_acceleration_m_s2;
   const Eigen::Vector3d position_des = push_origin_ + 0.5 * a * t * t;
   const Eigen::Vector3d velocity_des = a * t;
-  const double yaw_acceleration = plan_.yaw_rate_rad_s / plan_.push_duration_s;
-  const Eigen::Vector3d rpy_des(0.0, 0.0, 0.5 * yaw_acceleration * t * t);
-  const Eigen::Vector3d omega_des(0.0, 0.0, yaw_acceleration * t);
+  // the trunk's rates ramp up to their take-off values: the turn, and the tilt rates that cancel
+  // the legs' angular momentum
+  const Eigen::Vector3d takeoff_rate(plan_.takeoff_tilt_rate_rad_s.x(), plan_.takeoff_tilt_rate_rad_s.y(),
+                                     plan_.yaw_rate_rad_s);
+  const Eigen::Vector3d angular_acceleration_ff = takeoff_rate / plan_.push_duration_s;
+  const Eigen::Vector3d rpy_des = 0.5 * angular_acceleration_ff * t * t;
+  const Eigen::Vector3d omega_des = angular_acceleration_ff * t;
 
   Eigen::Vector3d position, velocity;
   frame_.estimate(state, kAllLegs, position, velocity);
@@ -180,7 +190,7 @@ void JumpController::push(const RobotState& state, JointCommand& command) {
   const Eigen::Matrix3d rotation_des = rotation_from_rpy(rpy_des);
   const Eigen::AngleAxisd rotation_error(rotation_des * rotation.transpose());
   const Eigen::Vector3d angle_error = rotation_error.angle() * rotation_error.axis();
-  const Eigen::Vector3d angular_acceleration = Eigen::Vector3d(0.0, 0.0, yaw_acceleration) +
+  const Eigen::Vector3d angular_acceleration = angular_acceleration_ff +
                                                config_.push_orientation_kp.cwiseProduct(angle_error) +
                                                config_.push_orientation_kd.cwiseProduct(omega_des - omega);
   const Eigen::Matrix3d inertia = rotation * body.inertia_diag.asDiagonal() * rotation.transpose();
@@ -217,19 +227,33 @@ void JumpController::push(const RobotState& state, JointCommand& command) {
   }
 }
 
+bool JumpController::push_done(const RobotState& state, double t) const {
+  if (t < plan_.push_duration_s) return false;
+  // the motors' torque-speed limit leaves the trunk behind its plan: the push goes on while it is
+  // slower than planned and the legs can still extend
+  Eigen::Vector3d position, velocity;
+  frame_.estimate(state, kAllLegs, position, velocity);
+  const Eigen::Vector3d& planned = plan_.takeoff_velocity_m_s;
+  const bool fast_enough = velocity.dot(planned) >= config_.takeoff_speed_fraction * planned.squaredNorm();
+  const bool legs_extended = position.z() >= plan_.takeoff_height_m + config_.push_extra_height_m;
+  return fast_enough || legs_extended || t >= config_.push_overrun_fraction * plan_.push_duration_s;
+}
+
 void JumpController::fly(const RobotState& state, JointCommand& command) {
   const double t = state.time_s - phase_start_s_;
   const double s = smooth_step(std::clamp(t / config_.swing_duration_s, 0.0, 1.0));
-  const Eigen::Matrix3d rotation = frame_.body_rotation(state);
-  // the landing pose: each foot below its stand position, ahead by the planned offset, at the
+  // the landing pose: each foot where it stood before the jump (relative to the trunk), ahead by the planned offset, at the
   // touchdown height below the trunk, whatever the trunk's attitude
-  const Eigen::Vector3d offset(plan_.landing_foot_offset_m.x(), plan_.landing_foot_offset_m.y(), 0.0);
-  const Eigen::Vector3d stand_leg(robot::kStandPose[0], robot::kStandPose[1], robot::kStandPose[2]);
+  // in the trunk's heading now: the offset turns back by the yaw since take-off
+  const Eigen::Vector3d rpy = frame_.body_rpy(state);
+  const Eigen::Matrix3d tilt = rotation_from_rpy(Eigen::Vector3d(rpy.x(), rpy.y(), 0.0));
+  const Eigen::Vector3d offset = rotation_from_rpy(Eigen::Vector3d(0.0, 0.0, -rpy.z())) *
+                                 Eigen::Vector3d(plan_.landing_foot_offset_m.x(), plan_.landing_foot_offset_m.y(), 0.0);
   const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravityMPerS2);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    Eigen::Vector3d foot = rotation * foot_position_in_body(leg, stand_leg) + offset;
+    Eigen::Vector3d foot = stand_feet_[leg] + offset;
     foot.z() = -config_.limits.touchdown_height_m + robot::kFootRadius;
-    const LegIkResult ik = inverse_kinematics_in_body(leg, rotation.transpose() * foot);
+    const LegIkResult ik = inverse_kinematics_in_body(leg, tilt.transpose() * foot);
     const Eigen::Vector3d from = leg_vector(takeoff_q_, leg);
     const Eigen::Vector3d q = from + (ik.q - from) * s;
     const Eigen::Vector3d tau = leg_gravity_torque(leg, leg_vector(state.q, leg), gravity_body);

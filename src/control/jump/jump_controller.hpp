@@ -33,6 +33,11 @@ struct JumpControllerConfig {
   Eigen::Vector3d push_orientation_kd{25.0, 25.0, 20.0};
   ForceDistributionConfig push_distribution{0.75, 260.0,
                                             (Vector6d() << 1.0, 1.0, 1.0, 40.0, 40.0, 40.0).finished(), 1e-4};
+  // past its planned time the push goes on until the trunk is this fast (share of the planned
+  // velocity), the legs this much further extended, or this share of the time has passed
+  double takeoff_speed_fraction = 0.97;
+  double push_extra_height_m = 0.02;
+  double push_overrun_fraction = 1.4;
   double push_joint_kp = 20.0;
   double push_joint_kd = 0.5;
   // flight: the legs swing to the landing pose in this time
@@ -88,6 +93,7 @@ class JumpController {
   void begin_landing(const RobotState& state);
   void push(const RobotState& state, JointCommand& command);
   void fly(const RobotState& state, JointCommand& command);
+  bool push_done(const RobotState& state, double t) const;
   bool touched_down(const RobotState& state) const;
   bool landing_failed(const RobotState& state) const;
 
@@ -105,6 +111,7 @@ class JumpController {
   bool centred_ = false;
   Eigen::Vector3d push_origin_ = Eigen::Vector3d::Zero();  // trunk at the push's start (stance frame)
   JointArray<double> takeoff_q_{};
+  std::array<Eigen::Vector3d, kNumLegs> stand_feet_{};  // before the jump, from the trunk (level axes)
   std::array<Eigen::Vector3d, kNumLegs> forces_{};
 };
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 
 #include "control/leg_gravity.hpp"
@@ -20,8 +21,8 @@ double flight_time_s(double vz, double drop_m) {
   return (vz + std::sqrt(std::max(discriminant, 0.0))) / kGravityMPerS2;
 }
 
-// the momentum map with the feet below their stand positions, the trunk at this height
-Eigen::Matrix3d momentum_map_at_height(double height_m, double mass_kg) {
+// the legs with the feet below their stand positions, the trunk at this height
+std::array<Eigen::Vector3d, kNumLegs> legs_at_height(double height_m) {
   const Eigen::Vector3d stand(robot::kStandPose[0], robot::kStandPose[1], robot::kStandPose[2]);
   std::array<Eigen::Vector3d, kNumLegs> q{};
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
@@ -29,7 +30,7 @@ Eigen::Matrix3d momentum_map_at_height(double height_m, double mass_kg) {
     foot.z() = -height_m + robot::kFootRadius;
     q[leg] = inverse_kinematics_in_body(leg, foot).q;
   }
-  return standing_momentum_map(q, mass_kg);
+  return q;
 }
 
 }  // namespace
@@ -43,8 +44,37 @@ Eigen::Matrix3d standing_momentum_map(const std::array<Eigen::Vector3d, 4>& leg_
   return map;
 }
 
+Eigen::Vector3d standing_angular_momentum(const std::array<Eigen::Vector3d, 4>& leg_q, const Eigen::Vector3d& v,
+                                          double mass_kg) {
+  // every point mass's position and velocity; the joint rates that keep the feet still move the
+  // masses along a short step of their motion
+  constexpr double kStepS = 1e-6;
+  double leg_mass = 0.0;
+  Eigen::Vector3d first_moment = Eigen::Vector3d::Zero();
+  Eigen::Vector3d momentum = Eigen::Vector3d::Zero();
+  Eigen::Vector3d angular = Eigen::Vector3d::Zero();  // about the trunk origin
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const Eigen::Vector3d qd = -foot_jacobian(leg, leg_q[leg]).inverse() * v;
+    const auto now = leg_point_masses(leg, leg_q[leg]);
+    const auto next = leg_point_masses(leg, leg_q[leg] + kStepS * qd);
+    for (std::size_t i = 0; i < now.size(); ++i) {
+      const Eigen::Vector3d velocity = v + (next[i].position - now[i].position) / kStepS;
+      leg_mass += now[i].mass_kg;
+      first_moment += now[i].mass_kg * now[i].position;
+      angular += now[i].mass_kg * now[i].position.cross(velocity);
+      momentum += now[i].mass_kg * velocity;
+    }
+  }
+  // the trunk: the rest of the mass, at its origin, moving at v
+  momentum += (mass_kg - leg_mass) * v;
+  const Eigen::Vector3d com = first_moment / mass_kg;
+  // about the centre of mass: L_c = L_o - c x p
+  return angular - com.cross(momentum);
+}
+
 Eigen::Vector2d planned_displacement(const JumpPlan& plan) {
-  return plan.push_stroke_m.head<2>() + plan.flight_travel_m.head<2>() + plan.landing_foot_offset_m;
+  return plan.crouch_offset_m + plan.push_stroke_m.head<2>() + plan.flight_travel_m.head<2>() +
+         plan.landing_foot_offset_m;
 }
 
 JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
@@ -55,40 +85,48 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
   const double drop_m = limits.takeoff_height_m - (target.landing_ground_m + limits.touchdown_height_m);
 
   // the trunk's take-off velocity that gives the centre of mass its own (near diagonal map)
-  const Eigen::Matrix3d momentum = momentum_map_at_height(limits.takeoff_height_m, limits.mass_kg);
+  const std::array<Eigen::Vector3d, kNumLegs> takeoff_legs = legs_at_height(limits.takeoff_height_m);
+  const Eigen::Matrix3d momentum = standing_momentum_map(takeoff_legs, limits.mass_kg);
+  // trunk horizontal speed per centre-of-mass speed
+  const double horizontal_gain = 2.0 / (momentum(0, 0) + momentum(1, 1));
+
   // vertical: the apex the target asks for, at least the lowest hop and enough to reach a higher landing
   const double rise_m = limits.stand_height_m + target.apex_rise_m - limits.takeoff_height_m;
   double vz = std::max(limits.min_vertical_speed_m_s, std::sqrt(2.0 * kGravityMPerS2 * std::max(rise_m, 0.0)));
   if (drop_m < 0.0) vz = std::max(vz, std::sqrt(-2.0 * kGravityMPerS2 * drop_m) + 0.3);
   // the push's force and the legs' speed cap it
-  const double vz_force = std::sqrt(2.0 * stroke_z * momentum(2, 2) * std::max(limits.max_vertical_force_n / limits.mass_kg - kGravityMPerS2, 0.0));
-  if (vz > vz_force) {
-    vz = vz_force;
-    plan.shortfall |= kJumpForceLimited;
-  }
-  if (vz > limits.max_takeoff_speed_m_s) {
-    vz = limits.max_takeoff_speed_m_s;
-    plan.shortfall |= kJumpSpeedLimited;
-  }
-  const double trunk_vz = vz / momentum(2, 2);
-  const double push_s = 2.0 * stroke_z / trunk_vz;
-  const double flight_s = flight_time_s(vz, drop_m);
-  // trunk horizontal speed per centre-of-mass speed
-  const double horizontal_gain = 2.0 / (momentum(0, 0) + momentum(1, 1));
+  const double vz_force = std::sqrt(2.0 * stroke_z * momentum(2, 2) *
+                                    std::max(limits.max_vertical_force_n / limits.mass_kg - kGravityMPerS2, 0.0));
+  const double vz_cap = std::min(vz_force, limits.max_takeoff_speed_m_s);
+  if (vz > vz_cap) plan.shortfall |= vz_force < limits.max_takeoff_speed_m_s ? kJumpForceLimited : kJumpSpeedLimited;
+  vz = std::min(vz, vz_cap);
 
-  // horizontal: stroke + flight + braking after touchdown = distance, for the speed u:
-  // u^2 / (2 a_b) + u (stroke_z gain / trunk_vz + flight_s) = distance
+  // horizontal: crouch offset + stroke + flight + braking after touchdown = distance, for the
+  // speed u: u^2 / (2 a_b) + u (stroke_z gain / (2 trunk_vz) + flight) = distance
   const double distance = target.displacement_m.norm();
   const Eigen::Vector2d direction =
       distance > 1e-9 ? Eigen::Vector2d(target.displacement_m / distance) : Eigen::Vector2d::UnitX();
-  const double c = stroke_z * horizontal_gain / trunk_vz + flight_s;
   const double braking = limits.landing_braking_m_s2;
-  double u = braking * (-c + std::sqrt(c * c + 2.0 * distance / braking));
+  const auto horizontal_speed = [&](double vertical) {
+    const double c = 0.5 * stroke_z * horizontal_gain * momentum(2, 2) / vertical + flight_time_s(vertical, drop_m);
+    return braking * (-c + std::sqrt(c * c + 2.0 * distance / braking));
+  };
+  // a long jump the landing cannot brake flies higher (longer) instead, as far as the legs allow
+  constexpr double kVerticalStep = 0.02;
+  while (horizontal_speed(vz) > limits.max_horizontal_speed_m_s && vz + kVerticalStep <= vz_cap) vz += kVerticalStep;
+  double u = horizontal_speed(vz);
+  if (u > limits.max_horizontal_speed_m_s) {
+    u = limits.max_horizontal_speed_m_s;
+    plan.shortfall |= kJumpLandingLimited;
+  }
   const double u_speed = std::sqrt(std::max(limits.max_takeoff_speed_m_s * limits.max_takeoff_speed_m_s - vz * vz, 0.0));
   if (u > u_speed) {
     u = u_speed;
     plan.shortfall |= kJumpSpeedLimited;
   }
+  const double trunk_vz = vz / momentum(2, 2);
+  const double push_s = 2.0 * stroke_z / trunk_vz;
+  const double flight_s = flight_time_s(vz, drop_m);
   // |a_xy| <= mu (a_z + g) for the trunk, with a = v / push_s
   const double u_friction = limits.friction_mu * (trunk_vz / push_s + kGravityMPerS2) * push_s / horizontal_gain;
   if (u > u_friction) {
@@ -101,8 +139,12 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
   plan.com_takeoff_velocity_m_s = {u * direction.x(), u * direction.y(), vz};
   plan.takeoff_velocity_m_s = momentum.inverse() * plan.com_takeoff_velocity_m_s;
   plan.momentum_map = momentum;
+  // the trunk turns against the legs' angular momentum at take-off (whole-body inertia)
+  const Eigen::Vector3d angular = standing_angular_momentum(takeoff_legs, plan.takeoff_velocity_m_s, limits.mass_kg);
+  plan.takeoff_tilt_rate_rad_s = {-angular.x() / limits.inertia_diag[0], -angular.y() / limits.inertia_diag[1]};
   plan.push_acceleration_m_s2 = plan.takeoff_velocity_m_s / push_s;
   plan.push_stroke_m = plan.takeoff_velocity_m_s * (0.5 * push_s);
+  plan.crouch_offset_m = -0.5 * plan.push_stroke_m.head<2>();
   plan.flight_travel_m = {u * direction.x() * flight_s, u * direction.y() * flight_s, -drop_m};
   plan.landing_foot_offset_m = direction * (u * u / (2.0 * braking));
   plan.apex_height_m = limits.takeoff_height_m + vz * vz / (2.0 * kGravityMPerS2);
@@ -114,16 +156,24 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
 }
 
 const char* jump_shortfall_text(unsigned shortfall) {
-  switch (shortfall & 7u) {
-    case 0: return "";
-    case kJumpSpeedLimited: return "take-off speed";
-    case kJumpFrictionLimited: return "friction";
-    case kJumpForceLimited: return "leg force";
-    case kJumpSpeedLimited | kJumpFrictionLimited: return "take-off speed, friction";
-    case kJumpSpeedLimited | kJumpForceLimited: return "take-off speed, leg force";
-    case kJumpFrictionLimited | kJumpForceLimited: return "friction, leg force";
-    default: return "take-off speed, friction, leg force";
-  }
+  // every combination of the four bits, named in one order
+  static const char* const kTexts[16] = {"",
+                                         "take-off speed",
+                                         "friction",
+                                         "take-off speed, friction",
+                                         "leg force",
+                                         "take-off speed, leg force",
+                                         "friction, leg force",
+                                         "take-off speed, friction, leg force",
+                                         "landing speed",
+                                         "take-off speed, landing speed",
+                                         "friction, landing speed",
+                                         "take-off speed, friction, landing speed",
+                                         "leg force, landing speed",
+                                         "take-off speed, leg force, landing speed",
+                                         "friction, leg force, landing speed",
+                                         "take-off speed, friction, leg force, landing speed"};
+  return kTexts[shortfall & 15u];
 }
 
 }  // namespace cerebellum

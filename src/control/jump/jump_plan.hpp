@@ -8,13 +8,15 @@
 // to v and s_z = takeoff_height - crouch_height fixes T_p = 2 s_z / v_z.
 // Flight: z(t) = takeoff_height + v_z t - g t^2 / 2 down to the touchdown height.
 // Landing: the feet touch down ahead of the trunk by what the landing's braking will carry it.
-// Displacement = push stroke + flight + foot offset at touchdown (the stand ends centred over
-// the feet), and the yaw turns at a constant rate through half the push and all of the flight.
+// Displacement = crouch offset + push stroke + flight + foot offset at touchdown (the stand ends
+// centred over the feet), and the yaw turns at a constant rate through half the push and all of the flight.
 #pragma once
 
 #include <array>
 
 #include <Eigen/Core>
+
+#include "core/robot_model.hpp"
 
 namespace cerebellum {
 
@@ -28,15 +30,19 @@ struct JumpTarget {
 
 struct JumpLimits {
   double stand_height_m = 0.235;
-  double crouch_height_m = 0.15;
-  double takeoff_height_m = 0.26;
+  double crouch_height_m = 0.13;
+  double takeoff_height_m = 0.27;
   double touchdown_height_m = 0.25;  // trunk above the landing ground when the feet touch
   double min_vertical_speed_m_s = 1.2;  // lowest hop: the legs swing to the landing pose in the air
   double max_takeoff_speed_m_s = 2.6;   // centre of mass; the legs' extension speed (motors' speed-torque curve)
   double friction_mu = 0.6;             // planned horizontal push within this share of the normal force
   double max_vertical_force_n = 520.0;  // the four legs together at the push's knee angles
-  double mass_kg = 8.52;
-  double landing_braking_m_s2 = 6.0;  // horizontal deceleration the landing stand gives
+  double mass_kg = robot::kTotalMassKg;
+  std::array<double, 3> inertia_diag = robot::kMpcInertiaDiag;  // whole body, about its centre of mass
+  double landing_braking_m_s2 = 8.0;  // horizontal deceleration the landing stand gives
+  // the fastest horizontal take-off (centre of mass) whose landing the stand absorbs: faster, the
+  // feet land so far ahead that the trunk pitches over them
+  double max_horizontal_speed_m_s = 1.2;
 };
 
 // what stops a jump from reaching its target (bits; 0: reachable as planned)
@@ -45,10 +51,14 @@ enum JumpShortfall : unsigned {
   kJumpSpeedLimited = 1,     // take-off speed above what the legs can produce
   kJumpFrictionLimited = 2,  // the push would slip
   kJumpForceLimited = 4,     // the push needs more force than the legs have
+  kJumpLandingLimited = 8,   // the landing could not brake the horizontal speed
 };
 
 struct JumpPlan {
   double crouch_height_m = 0.0;
+  // the trunk in the crouch, from its stand over the feet: back by half the stroke, so that the
+  // legs lean as little at the push's start as at its end
+  Eigen::Vector2d crouch_offset_m = Eigen::Vector2d::Zero();
   double takeoff_height_m = 0.0;
   double push_duration_s = 0.0;
   // the centre of mass's velocity at take-off (it flies the ballistic path) and the trunk's that
@@ -59,6 +69,9 @@ struct JumpPlan {
   Eigen::Vector3d push_acceleration_m_s2 = Eigen::Vector3d::Zero();  // constant, gravity not included
   Eigen::Vector3d push_stroke_m = Eigen::Vector3d::Zero();           // trunk travel during the push
   double yaw_rate_rad_s = 0.0;                                       // at take-off
+  // the trunk's roll and pitch rates at take-off that leave the whole robot without angular
+  // momentum (the extending legs carry some): the flight stays level
+  Eigen::Vector2d takeoff_tilt_rate_rad_s = Eigen::Vector2d::Zero();
   double flight_duration_s = 0.0;
   Eigen::Vector3d flight_travel_m = Eigen::Vector3d::Zero();  // trunk, take-off to touchdown
   Eigen::Vector2d landing_foot_offset_m = Eigen::Vector2d::Zero();  // feet ahead of the trunk at touchdown
@@ -75,6 +88,11 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits);
 // every foot stands still: K v, K = I - (1 / M) sum_legs leg_mass_jacobian J_foot^-1, for the legs at
 // these joint angles (abad, hip, knee per leg)
 Eigen::Matrix3d standing_momentum_map(const std::array<Eigen::Vector3d, 4>& leg_q, double mass_kg);
+
+// the robot's angular momentum about its centre of mass (body axes, level) when the trunk moves
+// at v without turning and every foot stands still; the trunk's own mass sits at its origin
+Eigen::Vector3d standing_angular_momentum(const std::array<Eigen::Vector3d, 4>& leg_q, const Eigen::Vector3d& v,
+                                          double mass_kg);
 
 // what a plan reaches: the displacement its stroke, flight and landing offset add up to
 Eigen::Vector2d planned_displacement(const JumpPlan& plan);
