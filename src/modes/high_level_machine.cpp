@@ -39,8 +39,10 @@ bool HighLevelMachine::allows_low_level_latch() const {
 
 void HighLevelMachine::on_handover() { handed_over_ = true; }
 
-void HighLevelMachine::refuse(const HighLevelCommand& command, const char* reason, const char* holder) {
+void HighLevelMachine::refuse(const HighLevelCommand& command, const char* reason, const char* holder,
+                              SwitchStatus status) {
   banned_ = true;
+  refused_status_ = status;
   counters_.banned_transitions.fetch_add(1, std::memory_order_relaxed);
   const int from_mode = handed_over_          ? static_cast<int>(ModeId::LowLevelMotor)
                         : current_ != nullptr ? static_cast<int>(current_->id())
@@ -73,7 +75,10 @@ bool HighLevelMachine::holds_lease(const TimedCommand& input) {
          source_name(*holder_)});
   }
   // the LCM client sees its refusal in robot_control_response
-  if (input.source == HighLevelSource::CyberDog2Lcm) banned_ = true;
+  if (input.source == HighLevelSource::CyberDog2Lcm) {
+    banned_ = true;
+    refused_status_ = SwitchStatus::BanTransition;
+  }
   return false;
 }
 
@@ -216,8 +221,12 @@ bool HighLevelMachine::apply(const RobotState& state, const HighLevelCommand& co
     refuse(command, reason);
     return false;
   }
-  if (const char* reason = target->start_refusal(state)) {
-    refuse(command, reason);
+  if (target != current_ && !transition_allowed(current_->id(), target->id())) {
+    refuse(command, "transition not allowed from the current mode");
+    return false;
+  }
+  if (const StartRefusal refusal = target->start_refusal(state, command)) {
+    refuse(command, refusal.reason, nullptr, refusal.status);
     return false;
   }
   if (target == current_) {
@@ -225,10 +234,6 @@ bool HighLevelMachine::apply(const RobotState& state, const HighLevelCommand& co
     running_command_ = command;
     current_->update(state, command);
     return true;
-  }
-  if (!transition_allowed(current_->id(), target->id())) {
-    refuse(command, "transition not allowed from the current mode");
-    return false;
   }
   switch_to(*target, state, command);
   return true;
@@ -300,7 +305,7 @@ void HighLevelMachine::update_status(const RobotState& state) {
     status_.order_process_bar = 100;
     status_.ori_error = orientation_error(state) ? 1 : 0;
     status_.footpos_error = 0;
-    status_.switch_status = protection ? *protection : banned_ ? SwitchStatus::BanTransition : SwitchStatus::Done;
+    status_.switch_status = protection ? *protection : banned_ ? refused_status_ : SwitchStatus::Done;
     return;
   }
   status_.mode = static_cast<int>(current_->id());
@@ -312,7 +317,7 @@ void HighLevelMachine::update_status(const RobotState& state) {
                           : orientation_error_               ? SwitchStatus::EmergencyStop
                           : foot_position_error_ != 0        ? SwitchStatus::HighDamping
                           : current_->damping_protection()   ? SwitchStatus::HighDamping
-                          : banned_                          ? SwitchStatus::BanTransition
+                          : banned_                          ? refused_status_
                           : current_->id() == ModeId::Lifted ? SwitchStatus::Lifted
                           : status_.order_process_bar < 100  ? SwitchStatus::Transitioning
                                                              : SwitchStatus::Done;

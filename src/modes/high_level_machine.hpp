@@ -83,7 +83,8 @@ class HighLevelMachine final : public OwnBehaviour {
   // false when the command was refused
   bool apply(const RobotState& state, const HighLevelCommand& command);
   void switch_to(Mode& mode, const RobotState& state, const HighLevelCommand& command);
-  void refuse(const HighLevelCommand& command, const char* reason, const char* holder = nullptr);
+  void refuse(const HighLevelCommand& command, const char* reason, const char* holder = nullptr,
+              SwitchStatus status = SwitchStatus::BanTransition);
   // one tick of client input into the queue, counted; false when it holds no new command
   bool take_input(const TimedCommand& input);
   // the lease: true when the input's client holds the robot or may take it over now
@@ -105,7 +106,8 @@ class HighLevelMachine final : public OwnBehaviour {
   bool handed_over_ = false;
   std::uint64_t applied_generation_ = 0;
   HighLevelStatus status_;
-  bool banned_ = false;  // the last command was refused: BAN_TRANS until the next accepted one
+  bool banned_ = false;  // the last command was refused: its status until the next accepted one
+  SwitchStatus refused_status_ = SwitchStatus::BanTransition;  // BAN_TRANS, or OVER_HEAT / LOW_BAT for a flip
   CommandCounters counters_;
   LiftDetectorConfig lift_config_;
   LiftWatch lift_watch_;              // the lift decision's memory, reset on every mode switch

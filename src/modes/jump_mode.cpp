@@ -23,22 +23,46 @@ JumpTarget jump_target(const JumpSpec& spec) {
   return target;
 }
 
-JumpMode::JumpMode(const JumpControllerConfig& config) : controller_(config) {}
+JumpPlan force_jump_plan(const HighLevelCommand& command, const JumpLimits& limits) {
+  const Eigen::Vector3d acceleration(command.acc_des[0], command.acc_des[1], command.acc_des[2]);
+  return plan_force_jump(acceleration, command.acc_des[5], limits);
+}
+
+JumpMode::JumpMode(ModeId mode, const JumpControllerConfig& config) : mode_(mode), controller_(config) {}
 
 const char* JumpMode::check(const HighLevelCommand& command) const {
-  if (find_jump(command.gait_id) == nullptr) return "mode 16 jump ids are 0..6 and 9";
+  const bool flip = command.gait_id == kBackFlipGaitId || command.gait_id == kFrontFlipGaitId;
+  if (mode_ == ModeId::Jump3d && find_jump(command.gait_id) == nullptr && !flip) {
+    return "mode 16 jump ids are 0..6 and 9 (20, 21: flips)";
+  }
   return nullptr;
 }
 
-const char* JumpMode::start_refusal(const RobotState& state) const {
-  // a new jump starts only from a finished one (the same command repeated does not jump again)
-  if (!controller_.finished() && controller_.phase() != JumpPhase::Idle) return nullptr;
-  return jump_refusal(state);
+StartRefusal JumpMode::start_refusal(const RobotState& state, const HighLevelCommand& command) const {
+  // a running jump ignores new commands (one-shot): nothing to refuse
+  if (!controller_.finished() && controller_.phase() != JumpPhase::Idle) return {};
+  if (mode_ == ModeId::Jump3d && (command.gait_id == kBackFlipGaitId || command.gait_id == kFrontFlipGaitId)) {
+    const bool front = command.gait_id == kFrontFlipGaitId;
+    switch (flip_gate(state, front ? Flip::Front : Flip::Back)) {
+      case FlipGate::OverHeat: return {SwitchStatus::OverHeat, "flip refused: a motor is above 74 deg C"};
+      case FlipGate::LowBattery:
+        return {SwitchStatus::LowBattery, front ? "front flip refused: battery below 50 %"
+                                                : "back flip refused: battery below 20 %"};
+      case FlipGate::Allowed: break;
+    }
+    return {SwitchStatus::BanTransition, "flips are not available yet in this MC (docs/jumps.md)"};
+  }
+  if (const char* reason = jump_refusal(state)) return {SwitchStatus::BanTransition, reason};
+  return {};
 }
 
 void JumpMode::enter(const RobotState& state, const HighLevelCommand& command) {
   gait_ = command.gait_id;
-  controller_.start(state, jump_target(*find_jump(command.gait_id)));
+  if (mode_ == ModeId::Jump3d) {
+    controller_.start(state, jump_target(*find_jump(command.gait_id)));
+  } else {
+    controller_.start(state, force_jump_plan(command, controller_.config().limits));
+  }
 }
 
 void JumpMode::update(const RobotState& state, const HighLevelCommand& command) {

@@ -1,8 +1,9 @@
-// Mode 16, Jump3D: the reference's one-shot jumps by gait id (turns, leaps, hops, up, down a
-// stair), planned by the MC from the robot's stand when the command arrives and run by
-// JumpController. The response shows 16 with the jump id and the share of crouch, push, flight
-// and landing done; afterwards the robot stands in the mode until the next command. A jump that
-// cannot land damps the joints (EDAMP) for the recovery stand.
+// The jump modes, planned by the MC from the robot's stand when the command arrives and run by
+// JumpController: mode 16, Jump3D, the reference's one-shot jumps by gait id (turns, leaps, hops,
+// up, down a stair); mode 22, the force jump, from the take-off accelerations in acc_des. The
+// response shows the mode with the jump id and the share of crouch, push, flight and landing
+// done; afterwards the robot stands in the mode until the next command. A jump that cannot land
+// damps the joints (EDAMP) for the recovery stand.
 #pragma once
 
 #include <array>
@@ -32,21 +33,33 @@ inline constexpr std::array<JumpSpec, 8> kJump3dTable{{
     {4, "forward 30 cm", 0.3, 0.0, 0.0, 0.0, 0.0},
     {5, "right 20 cm", 0.0, -0.2, 0.0, 0.0, 0.0},
     {6, "up 30 cm", 0.0, 0.0, 0.0, 0.3, 0.0},
-    // the stair's height is not known before touchdown: planned for a 10 cm step, landed when the
-    // feet find the ground
-    {9, "down a stair", 0.3, 0.0, 0.0, 0.0, -0.1},
+    // from the edge of a step (front feet at it) far enough that the rear feet clear it too; its
+    // height is not known before touchdown: planned for 10 cm, landed when the feet find the ground
+    {9, "down a stair", 0.5, 0.0, 0.0, 0.0, -0.1},
 }};
+
+// flips, this MC's documented extension of the mode-16 ids (the reference's table has no id for
+// them): refused with OVER_HEAT / LOW_BAT as the reference says, and otherwise with BAN_TRANS
+// until this MC can land them (docs/jumps.md)
+inline constexpr int kBackFlipGaitId = 20;
+inline constexpr int kFrontFlipGaitId = 21;
 
 // the entry of a jump id, or nullptr
 const JumpSpec* find_jump(int gait_id);
 JumpTarget jump_target(const JumpSpec& spec);
 
+// mode 22's acc_des: [0..2] the trunk's linear acceleration during the push (m/s^2; forward,
+// left, up; gravity not included), [5] its yaw acceleration (rad/s^2); [3], [4] (roll, pitch) are
+// not used: a jump lands level
+JumpPlan force_jump_plan(const HighLevelCommand& command, const JumpLimits& limits);
+
 class JumpMode final : public Mode {
  public:
-  explicit JumpMode(const JumpControllerConfig& config);
-  ModeId id() const override { return ModeId::Jump3d; }
+  // mode: ModeId::Jump3d or ModeId::ForceJump
+  JumpMode(ModeId mode, const JumpControllerConfig& config);
+  ModeId id() const override { return mode_; }
   const char* check(const HighLevelCommand& command) const override;
-  const char* start_refusal(const RobotState& state) const override;
+  StartRefusal start_refusal(const RobotState& state, const HighLevelCommand& command) const override;
   void enter(const RobotState& state, const HighLevelCommand& command) override;
   void update(const RobotState& state, const HighLevelCommand& command) override;
   void run(const RobotState& state, JointCommand& command) override;
@@ -59,6 +72,7 @@ class JumpMode final : public Mode {
   const JumpController& controller() const { return controller_; }
 
  private:
+  ModeId mode_;
   JumpController controller_;
   int gait_ = 0;
 };

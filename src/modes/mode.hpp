@@ -8,15 +8,23 @@
 
 namespace cerebellum {
 
+// a command the robot's state refuses: the status the response shows and the reason logged
+struct StartRefusal {
+  SwitchStatus status = SwitchStatus::BanTransition;
+  const char* reason = nullptr;  // static string; nullptr: not refused
+  explicit operator bool() const { return reason != nullptr; }
+};
+
 class Mode {
  public:
   virtual ~Mode() = default;
   virtual ModeId id() const = 0;
   // nullptr when the command's gait and values suit this mode, else why it is refused
   virtual const char* check(const HighLevelCommand& command) const = 0;
-  // nullptr when the robot's state lets the mode start (or a new command of it take effect) now,
-  // else why not: a jump needs a still, level stand (safety/jump_gate)
-  virtual const char* start_refusal(const RobotState&) const { return nullptr; }
+  // why the robot's state does not let the command start the mode (or take effect in it) now:
+  // a jump needs a still, level stand, a flip cool motors and charge (safety/jump_gate); no
+  // reason: it may
+  virtual StartRefusal start_refusal(const RobotState&, const HighLevelCommand&) const { return {}; }
   // the mode takes over the robot
   virtual void enter(const RobotState& state, const HighLevelCommand& command) = 0;
   // another mode takes over the robot

@@ -44,7 +44,8 @@ ModeSet::ModeSet(const ModeSetConfig& config)
       locomotion_(gaits_),
       motions_(config.motions),
       motion_(motions_, {&pose_control_, &qp_stand_, &locomotion_, &recovery_stand_}, user_gait_slot_, user_gait_),
-      jump_(jump_config(config)) {
+      jump_(ModeId::Jump3d, jump_config(config)),
+      force_jump_(ModeId::ForceJump, jump_config(config)) {
   // the stepping gaits of the table run on the MPC locomotion controller; the stands on the
   // configured one
   LocomotionGait& stand =
@@ -74,6 +75,7 @@ void ModeSet::add_to(HighLevelMachine& machine) {
   machine.add_mode(locomotion_);
   machine.add_mode(motion_);
   machine.add_mode(jump_);
+  machine.add_mode(force_jump_);
 }
 
 }  // namespace cerebellum

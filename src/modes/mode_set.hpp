@@ -49,6 +49,7 @@ class ModeSet {
   const MotionMode& motion() const { return motion_; }
   const UserGaitRunner& user_gait() const { return user_gait_; }
   const JumpMode& jump() const { return jump_; }
+  const JumpMode& force_jump() const { return force_jump_; }
   // where the high-level interface hands over a newly uploaded user gait (any thread)
   UserGaitSlot& user_gait_slot() { return user_gait_slot_; }
   // mode 11's gaits by id
@@ -71,6 +72,7 @@ class ModeSet {
   MotionLibrary motions_;
   MotionMode motion_;
   JumpMode jump_;
+  JumpMode force_jump_;
 };
 
 }  // namespace cerebellum

@@ -25,4 +25,14 @@ const char* jump_refusal(const RobotState& state, const JumpGateLimits& limits) 
   return nullptr;
 }
 
+FlipGate flip_gate(const RobotState& state, Flip flip, const FlipGateLimits& limits) {
+  for (const double temperature : state.temperature_c) {
+    if (!(temperature <= limits.max_motor_temperature_c)) return FlipGate::OverHeat;
+  }
+  const double needed =
+      flip == Flip::Front ? limits.front_flip_min_battery_percent : limits.back_flip_min_battery_percent;
+  if (state.battery.present && !(state.battery.state_of_charge_percent >= needed)) return FlipGate::LowBattery;
+  return FlipGate::Allowed;
+}
+
 }  // namespace cerebellum

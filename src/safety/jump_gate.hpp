@@ -1,6 +1,7 @@
 // Whether the robot may leave the ground now (a jump's start): it stands on all four feet, still,
-// level, on level ground, with healthy motors. Pure function of the state; the jump modes ask it
-// before they start and the state machine refuses with the reason (BAN_TRANS).
+// level, on level ground, with healthy motors; a flip also with motors below 74 deg C and enough
+// charge. Pure functions of the state; the jump modes ask them before they start and the state
+// machine refuses with the reason (BAN_TRANS, OVER_HEAT, LOW_BAT).
 #pragma once
 
 #include "core/robot_state.hpp"
@@ -18,5 +19,15 @@ struct JumpGateLimits {
 
 // nullptr when a jump may start, else why not (a static string)
 const char* jump_refusal(const RobotState& state, const JumpGateLimits& limits = {});
+
+// a flip also needs cool motors and charge (cyberdog2-highlevel.md, switch_status 6 and 7)
+enum class Flip { Back, Front };
+enum class FlipGate { Allowed, OverHeat, LowBattery };
+struct FlipGateLimits {
+  double max_motor_temperature_c = 74.0;
+  double back_flip_min_battery_percent = 20.0;
+  double front_flip_min_battery_percent = 50.0;
+};
+FlipGate flip_gate(const RobotState& state, Flip flip, const FlipGateLimits& limits = {});
 
 }  // namespace cerebellum

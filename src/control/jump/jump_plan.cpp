@@ -77,16 +77,56 @@ Eigen::Vector2d planned_displacement(const JumpPlan& plan) {
          plan.landing_foot_offset_m;
 }
 
-JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
-  JumpPlan plan;
+namespace {
+
+// the fastest vertical take-off (centre of mass) and what limits it: the push's force over the
+// stroke (v^2 = 2 s K_zz (F / m - g)) or the legs' extension speed
+struct VerticalCap {
+  double speed_m_s;
+  JumpShortfall limit;
+};
+VerticalCap vertical_speed_cap(const JumpLimits& limits, const Eigen::Matrix3d& momentum) {
+  const double stroke_z = limits.takeoff_height_m - limits.crouch_height_m;
+  const double force = std::sqrt(2.0 * stroke_z * momentum(2, 2) *
+                                 std::max(limits.max_vertical_force_n / limits.mass_kg - kGravityMPerS2, 0.0));
+  if (force < limits.max_takeoff_speed_m_s) return {force, kJumpForceLimited};
+  return {limits.max_takeoff_speed_m_s, kJumpSpeedLimited};
+}
+
+// every figure that follows from the centre of mass's take-off velocity
+void finish_plan(JumpPlan& plan, const Eigen::Vector3d& com_velocity, double drop_m, const JumpLimits& limits) {
+  const std::array<Eigen::Vector3d, kNumLegs> takeoff_legs = legs_at_height(limits.takeoff_height_m);
+  const Eigen::Matrix3d momentum = standing_momentum_map(takeoff_legs, limits.mass_kg);
   plan.crouch_height_m = limits.crouch_height_m;
   plan.takeoff_height_m = limits.takeoff_height_m;
+  plan.momentum_map = momentum;
+  plan.com_takeoff_velocity_m_s = com_velocity;
+  plan.takeoff_velocity_m_s = momentum.inverse() * com_velocity;
+  const double stroke_z = limits.takeoff_height_m - limits.crouch_height_m;
+  plan.push_duration_s = 2.0 * stroke_z / plan.takeoff_velocity_m_s.z();
+  plan.flight_duration_s = flight_time_s(com_velocity.z(), drop_m);
+  // the trunk turns against the legs' angular momentum at take-off (whole-body inertia)
+  const Eigen::Vector3d angular = standing_angular_momentum(takeoff_legs, plan.takeoff_velocity_m_s, limits.mass_kg);
+  plan.takeoff_tilt_rate_rad_s = {-angular.x() / limits.inertia_diag[0], -angular.y() / limits.inertia_diag[1]};
+  plan.push_acceleration_m_s2 = plan.takeoff_velocity_m_s / plan.push_duration_s;
+  plan.push_stroke_m = plan.takeoff_velocity_m_s * (0.5 * plan.push_duration_s);
+  plan.crouch_offset_m = -0.5 * plan.push_stroke_m.head<2>();
+  const Eigen::Vector2d horizontal = com_velocity.head<2>();
+  plan.flight_travel_m = {horizontal.x() * plan.flight_duration_s, horizontal.y() * plan.flight_duration_s, -drop_m};
+  plan.landing_foot_offset_m = horizontal * (horizontal.norm() / (2.0 * limits.landing_braking_m_s2));
+  plan.apex_height_m = limits.takeoff_height_m + com_velocity.z() * com_velocity.z() / (2.0 * kGravityMPerS2);
+  plan.planned_displacement_m = planned_displacement(plan);
+}
+
+}  // namespace
+
+JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
+  JumpPlan plan;
   const double stroke_z = limits.takeoff_height_m - limits.crouch_height_m;
   const double drop_m = limits.takeoff_height_m - (target.landing_ground_m + limits.touchdown_height_m);
 
   // the trunk's take-off velocity that gives the centre of mass its own (near diagonal map)
-  const std::array<Eigen::Vector3d, kNumLegs> takeoff_legs = legs_at_height(limits.takeoff_height_m);
-  const Eigen::Matrix3d momentum = standing_momentum_map(takeoff_legs, limits.mass_kg);
+  const Eigen::Matrix3d momentum = standing_momentum_map(legs_at_height(limits.takeoff_height_m), limits.mass_kg);
   // trunk horizontal speed per centre-of-mass speed
   const double horizontal_gain = 2.0 / (momentum(0, 0) + momentum(1, 1));
 
@@ -95,11 +135,10 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
   double vz = std::max(limits.min_vertical_speed_m_s, std::sqrt(2.0 * kGravityMPerS2 * std::max(rise_m, 0.0)));
   if (drop_m < 0.0) vz = std::max(vz, std::sqrt(-2.0 * kGravityMPerS2 * drop_m) + 0.3);
   // the push's force and the legs' speed cap it
-  const double vz_force = std::sqrt(2.0 * stroke_z * momentum(2, 2) *
-                                    std::max(limits.max_vertical_force_n / limits.mass_kg - kGravityMPerS2, 0.0));
-  const double vz_cap = std::min(vz_force, limits.max_takeoff_speed_m_s);
-  if (vz > vz_cap) plan.shortfall |= vz_force < limits.max_takeoff_speed_m_s ? kJumpForceLimited : kJumpSpeedLimited;
-  vz = std::min(vz, vz_cap);
+  const VerticalCap cap = vertical_speed_cap(limits, momentum);
+  if (vz > cap.speed_m_s) plan.shortfall |= cap.limit;
+  vz = std::min(vz, cap.speed_m_s);
+  const double vz_cap = cap.speed_m_s;
 
   // horizontal: crouch offset + stroke + flight + braking after touchdown = distance, for the
   // speed u: u^2 / (2 a_b) + u (stroke_z gain / (2 trunk_vz) + flight) = distance
@@ -126,32 +165,54 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
   }
   const double trunk_vz = vz / momentum(2, 2);
   const double push_s = 2.0 * stroke_z / trunk_vz;
-  const double flight_s = flight_time_s(vz, drop_m);
   // |a_xy| <= mu (a_z + g) for the trunk, with a = v / push_s
   const double u_friction = limits.friction_mu * (trunk_vz / push_s + kGravityMPerS2) * push_s / horizontal_gain;
   if (u > u_friction) {
     u = u_friction;
     plan.shortfall |= kJumpFrictionLimited;
   }
-
-  plan.push_duration_s = push_s;
-  plan.flight_duration_s = flight_s;
-  plan.com_takeoff_velocity_m_s = {u * direction.x(), u * direction.y(), vz};
-  plan.takeoff_velocity_m_s = momentum.inverse() * plan.com_takeoff_velocity_m_s;
-  plan.momentum_map = momentum;
-  // the trunk turns against the legs' angular momentum at take-off (whole-body inertia)
-  const Eigen::Vector3d angular = standing_angular_momentum(takeoff_legs, plan.takeoff_velocity_m_s, limits.mass_kg);
-  plan.takeoff_tilt_rate_rad_s = {-angular.x() / limits.inertia_diag[0], -angular.y() / limits.inertia_diag[1]};
-  plan.push_acceleration_m_s2 = plan.takeoff_velocity_m_s / push_s;
-  plan.push_stroke_m = plan.takeoff_velocity_m_s * (0.5 * push_s);
-  plan.crouch_offset_m = -0.5 * plan.push_stroke_m.head<2>();
-  plan.flight_travel_m = {u * direction.x() * flight_s, u * direction.y() * flight_s, -drop_m};
-  plan.landing_foot_offset_m = direction * (u * u / (2.0 * braking));
-  plan.apex_height_m = limits.takeoff_height_m + vz * vz / (2.0 * kGravityMPerS2);
+  const Eigen::Vector3d com_velocity(u * direction.x(), u * direction.y(), vz);
+  finish_plan(plan, com_velocity, drop_m, limits);
   // the yaw turns at a constant rate from mid-push to touchdown
-  plan.yaw_rate_rad_s = target.yaw_rad / (0.5 * push_s + flight_s);
+  plan.yaw_rate_rad_s = target.yaw_rad / (0.5 * plan.push_duration_s + plan.flight_duration_s);
   plan.planned_yaw_rad = target.yaw_rad;
-  plan.planned_displacement_m = planned_displacement(plan);
+  return plan;
+}
+
+JumpPlan plan_force_jump(const Eigen::Vector3d& acceleration, double yaw_acceleration, const JumpLimits& limits) {
+  JumpPlan plan;
+  const double stroke_z = limits.takeoff_height_m - limits.crouch_height_m;
+  const double drop_m = limits.takeoff_height_m - limits.touchdown_height_m;
+  const Eigen::Matrix3d momentum = standing_momentum_map(legs_at_height(limits.takeoff_height_m), limits.mass_kg);
+  const double horizontal_gain = 2.0 / (momentum(0, 0) + momentum(1, 1));
+  // the trunk's vertical acceleration over the stroke gives the take-off speed: v^2 = 2 a s
+  const double vz_of = 1.0 / momentum(2, 2);  // trunk per centre-of-mass speed
+  const double vz_min = limits.min_vertical_speed_m_s;
+  const VerticalCap cap = vertical_speed_cap(limits, momentum);
+  const double asked_az = std::isfinite(acceleration.z()) ? acceleration.z() : 0.0;
+  double vz = std::sqrt(2.0 * stroke_z * std::max(asked_az, 0.0)) / vz_of;
+  if (vz > cap.speed_m_s) plan.shortfall |= cap.limit;
+  // below the lowest hop the legs could not swing to the landing pose: the lowest hop
+  vz = std::clamp(vz, vz_min, cap.speed_m_s);
+  const double trunk_vz = vz * vz_of;
+  const double push_s = 2.0 * stroke_z / trunk_vz;
+  // horizontal: the asked acceleration for the push's time, within friction, the landing and the legs' speed
+  Eigen::Vector2d horizontal(acceleration.x(), acceleration.y());
+  if (!horizontal.allFinite()) horizontal.setZero();
+  double u = horizontal.norm() * push_s / horizontal_gain;
+  const Eigen::Vector2d direction = u > 1e-9 ? Eigen::Vector2d(horizontal.normalized()) : Eigen::Vector2d::UnitX();
+  const double u_friction = limits.friction_mu * (trunk_vz / push_s + kGravityMPerS2) * push_s / horizontal_gain;
+  const double u_speed = std::sqrt(std::max(limits.max_takeoff_speed_m_s * limits.max_takeoff_speed_m_s - vz * vz, 0.0));
+  if (u > u_friction) plan.shortfall |= kJumpFrictionLimited;
+  if (u > limits.max_horizontal_speed_m_s) plan.shortfall |= kJumpLandingLimited;
+  if (u > u_speed) plan.shortfall |= kJumpSpeedLimited;
+  u = std::min({u, u_friction, limits.max_horizontal_speed_m_s, u_speed});
+  finish_plan(plan, Eigen::Vector3d(u * direction.x(), u * direction.y(), vz), drop_m, limits);
+  // the turn: the asked yaw acceleration through the push, within the turn a jump may make
+  const double asked_yaw = std::isfinite(yaw_acceleration) ? yaw_acceleration : 0.0;
+  const double max_rate = limits.max_turn_rad / (0.5 * plan.push_duration_s + plan.flight_duration_s);
+  plan.yaw_rate_rad_s = std::clamp(asked_yaw * plan.push_duration_s, -max_rate, max_rate);
+  plan.planned_yaw_rad = plan.yaw_rate_rad_s * (0.5 * plan.push_duration_s + plan.flight_duration_s);
   return plan;
 }
 

@@ -43,6 +43,7 @@ struct JumpLimits {
   // the fastest horizontal take-off (centre of mass) whose landing the stand absorbs: faster, the
   // feet land so far ahead that the trunk pitches over them
   double max_horizontal_speed_m_s = 1.2;
+  double max_turn_rad = 1.5707963267948966;  // a force jump turns at most this far
 };
 
 // what stops a jump from reaching its target (bits; 0: reachable as planned)
@@ -83,6 +84,12 @@ struct JumpPlan {
 };
 
 JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits);
+
+// a jump from the take-off accelerations a client asks for (mode 22, acc_des): the trunk's linear
+// acceleration during the push (m/s^2, take-off frame, gravity not included) and its yaw
+// acceleration (rad/s^2), clamped to what the legs, the ground and the landing allow (shortfall
+// says which); NaN or Inf counts as 0
+JumpPlan plan_force_jump(const Eigen::Vector3d& acceleration, double yaw_acceleration, const JumpLimits& limits);
 
 // the robot's linear momentum per unit mass when the trunk moves at v (level, not turning) and
 // every foot stands still: K v, K = I - (1 / M) sum_legs leg_mass_jacobian J_foot^-1, for the legs at
