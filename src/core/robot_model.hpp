@@ -78,10 +78,14 @@ inline constexpr std::array<double, 3> kMpcInertiaDiag{0.07641, 0.17843, 0.19757
 struct LinkMass {
   double mass_kg;
   std::array<double, 3> com_m;
+  // about the centre of mass: link x (the abad joint's axis) and y (the pitch joints' axis)
+  double inertia_xx_kg_m2;
+  double inertia_yy_kg_m2;
 };
-inline constexpr LinkMass kAbadLink{0.354, {-0.00392, -0.015, -0.000306}};
-inline constexpr LinkMass kThighLink{0.482, {0.00212, -0.0212, -0.0184}};
-inline constexpr LinkMass kShankLink{0.116, {-0.0006, 4.72e-5, -0.0893}};
+inline constexpr LinkMass kBodyLink{4.03, {0.0273, -0.000242, 0.0143}, 0.0185, 0.0517};  // the trunk
+inline constexpr LinkMass kAbadLink{0.354, {-0.00392, -0.015, -0.000306}, 0.00019, 0.000276};
+inline constexpr LinkMass kThighLink{0.482, {0.00212, -0.0212, -0.0184}, 0.00101, 0.000983};
+inline constexpr LinkMass kShankLink{0.116, {-0.0006, 4.72e-5, -0.0893}, 0.000668, 0.000674};
 inline constexpr double kRotorMassKg = 0.0567;
 inline constexpr double kHipRotorOffsetM = 0.0758;   // along the abad link, from the abad joint
 inline constexpr double kKneeRotorOffsetM = 0.0342;  // along the thigh, from the hip joint

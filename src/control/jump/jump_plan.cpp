@@ -64,9 +64,19 @@ Eigen::Vector3d standing_angular_momentum(const std::array<Eigen::Vector3d, 4>& 
       angular += now[i].mass_kg * now[i].position.cross(velocity);
       momentum += now[i].mass_kg * velocity;
     }
+    // the links also spin: all three about the abad axis, thigh and shank about the pitch axis
+    // (link axes taken as the body's: the abad joint stays near zero)
+    angular.x() += (robot::kAbadLink.inertia_xx_kg_m2 + robot::kThighLink.inertia_xx_kg_m2 +
+                    robot::kShankLink.inertia_xx_kg_m2) * qd.x();
+    angular.y() += robot::kThighLink.inertia_yy_kg_m2 * qd.y() + robot::kShankLink.inertia_yy_kg_m2 * (qd.y() + qd.z());
   }
-  // the trunk: the rest of the mass, at its origin, moving at v
-  momentum += (mass_kg - leg_mass) * v;
+  // the trunk: the rest of the mass (the body and the abad rotors, symmetric about its centre) at
+  // the body's centre of mass, moving at v
+  const Eigen::Vector3d trunk_com(robot::kBodyLink.com_m[0], robot::kBodyLink.com_m[1], robot::kBodyLink.com_m[2]);
+  const double trunk_mass = mass_kg - leg_mass;
+  first_moment += robot::kBodyLink.mass_kg * trunk_com;
+  angular += robot::kBodyLink.mass_kg * trunk_com.cross(v);
+  momentum += trunk_mass * v;
   const Eigen::Vector3d com = first_moment / mass_kg;
   // about the centre of mass: L_c = L_o - c x p
   return angular - com.cross(momentum);
@@ -152,7 +162,11 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
   };
   // a long jump the landing cannot brake flies higher (longer) instead, as far as the legs allow
   constexpr double kVerticalStep = 0.02;
-  while (horizontal_speed(vz) > limits.max_horizontal_speed_m_s && vz + kVerticalStep <= vz_cap) vz += kVerticalStep;
+  const double max_h = limits.max_horizontal_speed_m_s;
+  while (horizontal_speed(vz) > max_h && vz + kVerticalStep <= vz_cap &&
+         std::hypot(max_h, vz + kVerticalStep) <= limits.max_takeoff_speed_m_s) {
+    vz += kVerticalStep;
+  }
   double u = horizontal_speed(vz);
   if (u > limits.max_horizontal_speed_m_s) {
     u = limits.max_horizontal_speed_m_s;
@@ -171,8 +185,21 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
     u = u_friction;
     plan.shortfall |= kJumpFrictionLimited;
   }
-  const Eigen::Vector3d com_velocity(u * direction.x(), u * direction.y(), vz);
+  Eigen::Vector3d com_velocity(u * direction.x(), u * direction.y(), vz);
   finish_plan(plan, com_velocity, drop_m, limits);
+  // the legs' momentum couples the trunk's horizontal and vertical speeds: correct the centre of
+  // mass's horizontal speed until the displacements add up to the target (when reachable)
+  if (plan.shortfall == kJumpReachable) {
+    for (int iteration = 0; iteration < 4; ++iteration) {
+      const Eigen::Vector2d error = target.displacement_m - plan.planned_displacement_m;
+      const double slope = plan.flight_duration_s + com_velocity.head<2>().norm() / braking;
+      com_velocity.head<2>() += error / slope;
+      // never past the landing's limit (the correction is a few millimetres)
+      const double speed = com_velocity.head<2>().norm();
+      if (speed > max_h) com_velocity.head<2>() *= max_h / speed;
+      finish_plan(plan, com_velocity, drop_m, limits);
+    }
+  }
   // the yaw turns at a constant rate from mid-push to touchdown
   plan.yaw_rate_rad_s = target.yaw_rad / (0.5 * plan.push_duration_s + plan.flight_duration_s);
   plan.planned_yaw_rad = target.yaw_rad;
@@ -184,30 +211,34 @@ JumpPlan plan_force_jump(const Eigen::Vector3d& acceleration, double yaw_acceler
   const double stroke_z = limits.takeoff_height_m - limits.crouch_height_m;
   const double drop_m = limits.takeoff_height_m - limits.touchdown_height_m;
   const Eigen::Matrix3d momentum = standing_momentum_map(legs_at_height(limits.takeoff_height_m), limits.mass_kg);
-  const double horizontal_gain = 2.0 / (momentum(0, 0) + momentum(1, 1));
-  // the trunk's vertical acceleration over the stroke gives the take-off speed: v^2 = 2 a s
-  const double vz_of = 1.0 / momentum(2, 2);  // trunk per centre-of-mass speed
-  const double vz_min = limits.min_vertical_speed_m_s;
+  // the asked trunk acceleration; NaN or Inf asks nothing
+  Eigen::Vector3d a = acceleration;
+  for (Eigen::Index k = 0; k < 3; ++k) {
+    if (!std::isfinite(a[k])) a[k] = 0.0;
+  }
+  // within the friction cone
+  const double horizontal_max = limits.friction_mu * (std::max(a.z(), 0.0) + kGravityMPerS2);
+  if (a.head<2>().norm() > horizontal_max) {
+    a.head<2>() *= horizontal_max / a.head<2>().norm();
+    plan.shortfall |= kJumpFrictionLimited;
+  }
+  // over the stroke: v_z^2 = 2 a_z s, the push lasting 2 s / v_z (a lowest hop at least)
+  const double trunk_vz = std::sqrt(2.0 * stroke_z * std::max(a.z(), 0.0));
+  const double push_s = trunk_vz > 0.0 ? 2.0 * stroke_z / trunk_vz : 0.0;
+  Eigen::Vector3d com = momentum * Eigen::Vector3d(a.x() * push_s, a.y() * push_s, trunk_vz);
   const VerticalCap cap = vertical_speed_cap(limits, momentum);
-  const double asked_az = std::isfinite(acceleration.z()) ? acceleration.z() : 0.0;
-  double vz = std::sqrt(2.0 * stroke_z * std::max(asked_az, 0.0)) / vz_of;
-  if (vz > cap.speed_m_s) plan.shortfall |= cap.limit;
-  // below the lowest hop the legs could not swing to the landing pose: the lowest hop
-  vz = std::clamp(vz, vz_min, cap.speed_m_s);
-  const double trunk_vz = vz * vz_of;
-  const double push_s = 2.0 * stroke_z / trunk_vz;
-  // horizontal: the asked acceleration for the push's time, within friction, the landing and the legs' speed
-  Eigen::Vector2d horizontal(acceleration.x(), acceleration.y());
-  if (!horizontal.allFinite()) horizontal.setZero();
-  double u = horizontal.norm() * push_s / horizontal_gain;
-  const Eigen::Vector2d direction = u > 1e-9 ? Eigen::Vector2d(horizontal.normalized()) : Eigen::Vector2d::UnitX();
-  const double u_friction = limits.friction_mu * (trunk_vz / push_s + kGravityMPerS2) * push_s / horizontal_gain;
-  const double u_speed = std::sqrt(std::max(limits.max_takeoff_speed_m_s * limits.max_takeoff_speed_m_s - vz * vz, 0.0));
-  if (u > u_friction) plan.shortfall |= kJumpFrictionLimited;
-  if (u > limits.max_horizontal_speed_m_s) plan.shortfall |= kJumpLandingLimited;
-  if (u > u_speed) plan.shortfall |= kJumpSpeedLimited;
-  u = std::min({u, u_friction, limits.max_horizontal_speed_m_s, u_speed});
-  finish_plan(plan, Eigen::Vector3d(u * direction.x(), u * direction.y(), vz), drop_m, limits);
+  if (com.z() > cap.speed_m_s) plan.shortfall |= cap.limit;
+  // below the lowest hop the legs could not swing to the landing pose: the lowest hop, in place
+  if (com.z() < limits.min_vertical_speed_m_s) com.head<2>().setZero();
+  com.z() = std::clamp(com.z(), limits.min_vertical_speed_m_s, cap.speed_m_s);
+  const double u_speed =
+      std::sqrt(std::max(limits.max_takeoff_speed_m_s * limits.max_takeoff_speed_m_s - com.z() * com.z(), 0.0));
+  const double u_max = std::min(limits.max_horizontal_speed_m_s, u_speed);
+  if (com.head<2>().norm() > u_max) {
+    plan.shortfall |= u_speed < limits.max_horizontal_speed_m_s ? kJumpSpeedLimited : kJumpLandingLimited;
+    com.head<2>() *= u_max / com.head<2>().norm();
+  }
+  finish_plan(plan, com, drop_m, limits);
   // the turn: the asked yaw acceleration through the push, within the turn a jump may make
   const double asked_yaw = std::isfinite(yaw_acceleration) ? yaw_acceleration : 0.0;
   const double max_rate = limits.max_turn_rad / (0.5 * plan.push_duration_s + plan.flight_duration_s);

@@ -97,7 +97,8 @@ JumpPlan plan_force_jump(const Eigen::Vector3d& acceleration, double yaw_acceler
 Eigen::Matrix3d standing_momentum_map(const std::array<Eigen::Vector3d, 4>& leg_q, double mass_kg);
 
 // the robot's angular momentum about its centre of mass (body axes, level) when the trunk moves
-// at v without turning and every foot stands still; the trunk's own mass sits at its origin
+// at v without turning and every foot stands still: the links as point masses plus their spin
+// about the joint axes
 Eigen::Vector3d standing_angular_momentum(const std::array<Eigen::Vector3d, 4>& leg_q, const Eigen::Vector3d& v,
                                           double mass_kg);
 
