@@ -59,7 +59,13 @@ StartRefusal JumpMode::start_refusal(const RobotState& state, const HighLevelCom
 void JumpMode::enter(const RobotState& state, const HighLevelCommand& command) {
   gait_ = command.gait_id;
   if (mode_ == ModeId::Jump3d) {
-    controller_.start(state, jump_target(*find_jump(command.gait_id)));
+    // the machine enters only with a jump id the table has (flips are refused before)
+    const JumpSpec* spec = find_jump(command.gait_id);
+    if (spec == nullptr) {
+      controller_.hold(state);
+      return;
+    }
+    controller_.start(state, jump_target(*spec));
   } else {
     controller_.start(state, force_jump_plan(command, controller_.config().limits));
   }

@@ -35,7 +35,7 @@ inline constexpr std::array<JumpSpec, 8> kJump3dTable{{
     {6, "up 30 cm", 0.0, 0.0, 0.0, 0.3, 0.0},
     // from the edge of a step (front feet at it) far enough that the rear feet clear it too; its
     // height is not known before touchdown: planned for 10 cm, landed when the feet find the ground
-    {9, "down a stair", 0.5, 0.0, 0.0, 0.0, -0.1},
+    {9, "down a stair", 0.6, 0.0, 0.0, 0.0, -0.1},
 }};
 
 // flips, this MC's documented extension of the mode-16 ids (the reference's table has no id for
@@ -48,8 +48,8 @@ inline constexpr int kFrontFlipGaitId = 21;
 const JumpSpec* find_jump(int gait_id);
 JumpTarget jump_target(const JumpSpec& spec);
 
-// mode 22's acc_des: [0..2] the trunk's linear acceleration during the push (m/s^2; forward,
-// left, up; gravity not included), [5] its yaw acceleration (rad/s^2); [3], [4] (roll, pitch) are
+// mode 22's acc_des: [0..2] the robot's (centre of mass's) acceleration during the push (m/s^2;
+// forward, left, up; gravity not included), [5] its yaw acceleration (rad/s^2); [3], [4] (roll, pitch) are
 // not used: a jump lands level
 JumpPlan force_jump_plan(const HighLevelCommand& command, const JumpLimits& limits);
 

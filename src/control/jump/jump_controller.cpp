@@ -81,6 +81,12 @@ void JumpController::start(const RobotState& state, const JumpPlan& plan) {
   stand_.set_goal(crouch, PoseSpeed{1.0, 0.5, config_.crouch_duration_s}, config_.crouch_duration_s);
 }
 
+void JumpController::hold(const RobotState& state) {
+  phase_ = JumpPhase::Standing;
+  start_s_ = phase_start_s_ = last_time_s_ = state.time_s;
+  stand_.start(state);
+}
+
 double JumpController::progress() const {
   if (phase_ == JumpPhase::Idle) return 0.0;
   if (finished()) return 1.0;

@@ -73,6 +73,8 @@ class JumpController {
   // start with a plan made elsewhere (the force jump plans from an acceleration)
   void start(const RobotState& state, const JumpPlan& plan);
   void compute(const RobotState& state, JointCommand& command);
+  // no jump: stand where the robot is (finished)
+  void hold(const RobotState& state);
 
   JumpPhase phase() const { return phase_; }
   // 0..1 across crouch, push, flight and landing (1 once it stands, or failed)

@@ -211,21 +211,23 @@ JumpPlan plan_force_jump(const Eigen::Vector3d& acceleration, double yaw_acceler
   const double stroke_z = limits.takeoff_height_m - limits.crouch_height_m;
   const double drop_m = limits.takeoff_height_m - limits.touchdown_height_m;
   const Eigen::Matrix3d momentum = standing_momentum_map(legs_at_height(limits.takeoff_height_m), limits.mass_kg);
-  // the asked trunk acceleration; NaN or Inf asks nothing
+  // the asked acceleration of the centre of mass; NaN or Inf asks nothing
   Eigen::Vector3d a = acceleration;
   for (Eigen::Index k = 0; k < 3; ++k) {
     if (!std::isfinite(a[k])) a[k] = 0.0;
   }
-  // within the friction cone
+  // within the friction cone (the ground's force is m (a + g))
   const double horizontal_max = limits.friction_mu * (std::max(a.z(), 0.0) + kGravityMPerS2);
   if (a.head<2>().norm() > horizontal_max) {
     a.head<2>() *= horizontal_max / a.head<2>().norm();
     plan.shortfall |= kJumpFrictionLimited;
   }
-  // over the stroke: v_z^2 = 2 a_z s, the push lasting 2 s / v_z (a lowest hop at least)
-  const double trunk_vz = std::sqrt(2.0 * stroke_z * std::max(a.z(), 0.0));
+  // the trunk's acceleration that gives the centre of mass the asked one, over the stroke:
+  // v_z^2 = 2 a_z s, the push lasting 2 s / v_z
+  const Eigen::Vector3d trunk_a = momentum.inverse() * a;
+  const double trunk_vz = std::sqrt(2.0 * stroke_z * std::max(trunk_a.z(), 0.0));
   const double push_s = trunk_vz > 0.0 ? 2.0 * stroke_z / trunk_vz : 0.0;
-  Eigen::Vector3d com = momentum * Eigen::Vector3d(a.x() * push_s, a.y() * push_s, trunk_vz);
+  Eigen::Vector3d com = a * push_s;
   const VerticalCap cap = vertical_speed_cap(limits, momentum);
   if (com.z() > cap.speed_m_s) plan.shortfall |= cap.limit;
   // below the lowest hop the legs could not swing to the landing pose: the lowest hop, in place

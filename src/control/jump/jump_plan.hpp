@@ -85,9 +85,9 @@ struct JumpPlan {
 
 JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits);
 
-// a jump from the take-off accelerations a client asks for (mode 22, acc_des): the trunk's linear
-// acceleration during the push (m/s^2, take-off frame, gravity not included) and its yaw
-// acceleration (rad/s^2), clamped to what the legs, the ground and the landing allow (shortfall
+// a jump from the take-off accelerations a client asks for (mode 22, acc_des): the centre of
+// mass's linear acceleration during the push (m/s^2, take-off frame, gravity not included) and
+// the trunk's yaw acceleration (rad/s^2), clamped to what the legs, the ground and the landing allow (shortfall
 // says which); NaN or Inf counts as 0
 JumpPlan plan_force_jump(const Eigen::Vector3d& acceleration, double yaw_acceleration, const JumpLimits& limits);
 
