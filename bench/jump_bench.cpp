@@ -146,6 +146,8 @@ int main(int argc, char** argv) {
       }
     } else if (arg == "--verbose") {
       verbose = true;
+    } else if (arg.rfind("--benchmark_", 0) == 0) {
+      // bench/run.sh's Google Benchmark options: this benchmark prints its own table
     } else {
       std::fprintf(stderr, "usage: jump_bench [--seeds=A-B] [--jumps=0,1,...] [--verbose]\n");
       return 2;

@@ -1,5 +1,5 @@
 // The demo tour: drives the MC through its high-level LCM interface like a user program would:
-// stand up, tilt the body, walk a 1 m square, turn on the spot, lie down. One progress line per
+// stand up, tilt the body, walk a 1 m square, turn on the spot, jump forward, lie down. One progress line per
 // step; a closing report (steps done, distances from the MC's odometry, errors). Exit 0 only
 // when every step succeeded.
 //   cerebellum_demo_tour [--short]     (--short: a smaller square, for CI)
@@ -150,6 +150,10 @@ int main(int argc, char** argv) {
   }
   if (!short_tour) tour.hold("turn on the spot, fast trot (10)", command(11, 10, 0.0, 2.0), kPi, 0.0, 2 * kPi);
   tour.reach("stop (11, gait 1)", command(11, 1), 10);
+  // a jump starts from a still stand (the MC refuses it while the robot still turns): let the
+  // stand settle first
+  std::this_thread::sleep_for(milliseconds(1000));
+  tour.reach("jump forward 30 cm (16, jump 4)", command(16, 4), 10);
   tour.reach("lie down (7, gait 1)", command(7, 1), 10);
   client.stop();
   return tour.report();

@@ -25,8 +25,10 @@ class ScriptedMode final : public Mode {
   int gait_id() const override { return gait_; }
   int progress_percent() const override { return progress; }
   bool damping_protection() const override { return damping; }
+  StartRefusal start_refusal(const RobotState&, const HighLevelCommand&) const override { return refusal; }
 
   ContactPlan plan;
+  StartRefusal refusal;
   bool damping = false;
   int progress = 100;
   int entered = 0;
@@ -114,6 +116,34 @@ TEST(HighLevelMachine, AModeThatGaveUpAndDampsIsReportedAsHighDampingUntilItReco
   m.loco.damping = false;
   m.tick();
   EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::Done);
+}
+
+TEST(HighLevelMachine, AModeTheRobotsStateForbidsIsRefusedWithItsOwnStatusAndTheOldModeRuns) {
+  Machine m(ModeId::Locomotion);
+  m.tick();
+  m.pose.refusal = {SwitchStatus::OverHeat, "too hot"};
+  m.machine.submit(cmd(ModeId::PoseControl, 0, 1), m.state.time_s);
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, 11);
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::OverHeat);
+  EXPECT_EQ(m.pose.entered, 0);
+  const auto note = m.machine.refusals().try_pop();
+  ASSERT_TRUE(note.has_value());
+  EXPECT_STREQ(note->reason, "too hot");
+  // once the state allows it, the same mode starts
+  m.pose.refusal = {};
+  m.machine.submit(cmd(ModeId::PoseControl, 0, 2), m.state.time_s);
+  m.tick();
+  EXPECT_EQ(m.machine.status().mode, 21);
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::Done);
+  // a switch the table forbids is refused as such first (PoseControl -> PureDamper is allowed,
+  // Off -> Locomotion is not)
+  Machine off;
+  off.tick();
+  off.loco.refusal = {SwitchStatus::LowBattery, "low"};
+  off.machine.submit(cmd(ModeId::Locomotion, 1, 1), off.state.time_s);
+  off.tick();
+  EXPECT_EQ(off.machine.status().switch_status, SwitchStatus::BanTransition);
 }
 
 TEST(HighLevelMachine, IllegalSwitchIsBannedAndKeepsTheOldMode) {
