@@ -119,7 +119,9 @@ int main(int argc, char** argv) {
       return 2;
     }
   }
-  std::printf("| asked take-off pitch rate (rad/s) | reached at lift-off (rad/s) | flight (s) | rotation before touchdown (rad) | of a back flip |\n");
+  std::printf(
+      "| asked take-off pitch rate (rad/s) | reached at lift-off (rad/s) | flight (s) | rotation before touchdown "
+      "(rad) | of a back flip |\n");
   std::printf("|---|---|---|---|---|\n");
   for (const double rate : rates) {
     const Reach r = attempt(rate);

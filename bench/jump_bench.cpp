@@ -92,20 +92,27 @@ Figures run_jump(int id, long seed, bool verbose) {
     const HighLevelStatus& status = mc.machine().status();
     if (verbose && static_cast<long>(std::lround((now - start) * 500)) % 10 == 0 && now - start < 1.5) {
       const JumpController& jump = mc.modes().jump().controller();
-      std::printf("  t=%.3f %-8s mode=%d/%d bar=%3d x=%.3f y=%.3f z=%.3f roll=%.2f pitch=%.2f yaw=%.2f vx=%.2f vz=%.2f contacts=%d%d%d%d\n",
-                  now - start, jump_phase_name(jump.phase()), status.mode, static_cast<int>(status.switch_status), status.order_process_bar, g.position[0] - before.position[0],
-                  g.position[1] - before.position[1], g.position[2], rpy.x(), rpy.y(), rpy.z() - yaw0,
-                  g.velocity_world[0], g.velocity_world[2], g.foot_contact[0], g.foot_contact[1], g.foot_contact[2], g.foot_contact[3]);
+      std::printf(
+          "  t=%.3f %-8s mode=%d/%d bar=%3d x=%.3f y=%.3f z=%.3f roll=%.2f pitch=%.2f yaw=%.2f vx=%.2f vz=%.2f "
+          "contacts=%d%d%d%d\n",
+          now - start, jump_phase_name(jump.phase()), status.mode, static_cast<int>(status.switch_status),
+          status.order_process_bar, g.position[0] - before.position[0], g.position[1] - before.position[1],
+          g.position[2], rpy.x(), rpy.y(), rpy.z() - yaw0, g.velocity_world[0], g.velocity_world[2], g.foot_contact[0],
+          g.foot_contact[1], g.foot_contact[2], g.foot_contact[3]);
     }
     if (verbose && now - start < 0.0025) {
       const JumpPlan& plan = mc.modes().jump().controller().plan();
-      std::printf("  plan: push %.3f s, trunk v (%.2f %.2f %.2f), com v (%.2f %.2f %.2f), flight %.3f s, K diag %.2f %.2f %.2f, "
-                  "crouch %.3f stroke %.3f flight %.3f offset %.3f, yaw rate %.2f, tilt rates %.2f %.2f, foot offset %.3f, shortfall %s\n",
-                  plan.push_duration_s, plan.takeoff_velocity_m_s.x(), plan.takeoff_velocity_m_s.y(),
-                  plan.takeoff_velocity_m_s.z(), plan.com_takeoff_velocity_m_s.x(), plan.com_takeoff_velocity_m_s.y(),
-                  plan.com_takeoff_velocity_m_s.z(), plan.flight_duration_s, plan.momentum_map(0, 0),
-                  plan.momentum_map(1, 1), plan.momentum_map(2, 2), plan.crouch_offset_m.x(), plan.push_stroke_m.x(), plan.flight_travel_m.x(), plan.landing_foot_offset_m.x(), plan.yaw_rate_rad_s, plan.takeoff_tilt_rate_rad_s.x(), plan.takeoff_tilt_rate_rad_s.y(), plan.landing_foot_offset_m.norm(),
-                  jump_shortfall_text(plan.shortfall));
+      std::printf(
+          "  plan: push %.3f s, trunk v (%.2f %.2f %.2f), com v (%.2f %.2f %.2f), flight %.3f s, K diag %.2f %.2f "
+          "%.2f, "
+          "crouch %.3f stroke %.3f flight %.3f offset %.3f, yaw rate %.2f, tilt rates %.2f %.2f, foot offset %.3f, "
+          "shortfall %s\n",
+          plan.push_duration_s, plan.takeoff_velocity_m_s.x(), plan.takeoff_velocity_m_s.y(),
+          plan.takeoff_velocity_m_s.z(), plan.com_takeoff_velocity_m_s.x(), plan.com_takeoff_velocity_m_s.y(),
+          plan.com_takeoff_velocity_m_s.z(), plan.flight_duration_s, plan.momentum_map(0, 0), plan.momentum_map(1, 1),
+          plan.momentum_map(2, 2), plan.crouch_offset_m.x(), plan.push_stroke_m.x(), plan.flight_travel_m.x(),
+          plan.landing_foot_offset_m.x(), plan.yaw_rate_rad_s, plan.takeoff_tilt_rate_rad_s.x(),
+          plan.takeoff_tilt_rate_rad_s.y(), plan.landing_foot_offset_m.norm(), jump_shortfall_text(plan.shortfall));
     }
     if (verbose && record.health.causes != 0) {
       std::printf("  health causes %u motors %x battery %.2f V %.1f A faults FRk %x\n", record.health.causes,

@@ -1,8 +1,11 @@
 #!/usr/bin/env bash
-# A video of each named motion (mode 62): for every id, the MC on the simulated robot records
-# build/motions/motion_<id>.mp4 while `cerebellum cmd` stands the robot up and runs the motion,
-# inside a private network namespace. docs/motions.md links the files.
-#   scripts/record_motions.sh [ids...]      (default: every shipped motion; SIZE=WxH, default 640x360)
+# A video of each named motion (mode 62) or jump (mode 16): for every id, the MC on the simulated
+# robot records build/motions/motion_<id>.mp4 (build/jumps/jump_<id>.mp4) while `cerebellum cmd`
+# stands the robot up and runs it, inside a private network namespace; the jump down a stair (9)
+# starts on a 10 cm landing (config/demo_stair.yaml). docs/motions.md and docs/jumps.md link the
+# files.
+#   scripts/record_motions.sh [--jumps] [ids...]
+#     (default: every shipped motion, or every jump; SIZE=WxH, default 640x360)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 if [[ "${1:-}" != "--inside" ]]; then
@@ -11,19 +14,34 @@ if [[ "${1:-}" != "--inside" ]]; then
   exec "$root/scripts/netns_run.sh" "$0" --inside "$@"
 fi
 shift
+kind=motion
+if [[ "${1:-}" == "--jumps" ]]; then
+  kind=jump
+  shift
+fi
 cerebellum=$root/build/src/app/cerebellum
-out=$root/build/motions
+out=$root/build/${kind}s
 mkdir -p "$out"
 ids=("$@")
-[[ ${#ids[@]} -gt 0 ]] || ids=($(sed -n 's/^id = //p' "$root"/config/motions/*.toml))
+if [[ ${#ids[@]} -eq 0 ]]; then
+  if [[ $kind == motion ]]; then ids=($(sed -n 's/^id = //p' "$root"/config/motions/*.toml)); else ids=(0 1 2 3 4 5 6 9); fi
+fi
 for id in "${ids[@]}"; do
-  "$cerebellum" sim --config "$root/config/demo.yaml" --speed 1 --record "$out/motion_$id.mp4" \
-    --record-size "${SIZE:-640x360}" > "$out/motion_$id.log" 2>&1 &
+  config=$root/config/demo.yaml
+  [[ $kind != jump || "$id" != 9 ]] || config=$root/config/demo_stair.yaml
+  "$cerebellum" sim --config "$config" --speed 1 --record "$out/${kind}_$id.mp4" \
+    --record-size "${SIZE:-640x360}" > "$out/${kind}_$id.log" 2>&1 &
   sim=$!
-  for _ in $(seq 100); do grep -q "cerebellum ready" "$out/motion_$id.log" && break; sleep 0.1; done
+  for _ in $(seq 100); do grep -q "cerebellum ready" "$out/${kind}_$id.log" && break; sleep 0.1; done
   "$cerebellum" cmd stand --hold 0.5 > /dev/null
-  if "$cerebellum" cmd raw --mode 62 --gait "$id" --timeout 60 --hold 1.5; then result=done; else result=FAILED; fi
+  if [[ $kind == motion ]]; then
+    if "$cerebellum" cmd raw --mode 62 --gait "$id" --timeout 60 --hold 1.5; then result=done; else result=FAILED; fi
+  else
+    # a jump starts from a still stand
+    "$cerebellum" cmd raw --mode 11 --gait 1 --timeout 10 --hold 1.0 > /dev/null
+    if "$cerebellum" cmd raw --mode 16 --gait "$id" --timeout 10 --hold 1.5; then result=done; else result=FAILED; fi
+  fi
   kill -INT "$sim"
   wait "$sim" || true
-  echo "motion $id: $result, video $out/motion_$id.mp4"
+  echo "$kind $id: $result, video $out/${kind}_$id.mp4"
 done

@@ -86,8 +86,7 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
   }
   acceleration.z() += height_integral_;
   const Eigen::Matrix3d rotation_des = rotation_from_rpy(target.pose.rpy);
-  const Eigen::AngleAxisd rotation_error(rotation_des * rotation.transpose());
-  const Eigen::Vector3d angle_error = rotation_error.angle() * rotation_error.axis();
+  const Eigen::Vector3d angle_error = rotation_error(rotation_des, rotation);
   if (angle_error.norm() < config_.integrate_below_angle_error_rad) {
     angle_integral_ = (angle_integral_ + dt_s * config_.ki_orientation.cwiseProduct(angle_error))
                           .cwiseMax(-config_.max_integral_angular_acceleration)
@@ -103,14 +102,10 @@ void BalanceController::compute(const RobotState& state, const BalanceTarget& ta
   wrench_.tail<3>() = inertia * angular_acceleration;
 
   // share it among the loaded feet
-  std::array<Eigen::Vector3d, kNumLegs> feet_from_com{};
   std::array<double, kNumLegs> force_limit{};
-  const Eigen::Vector3d com = rotation * config_.com_in_body;
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    feet_from_com[leg] = rotation * state.foot_position_body[leg] - com;
-    force_limit[leg] = stance[leg] ? target.force_z_max_n[leg] : 0.0;
-  }
-  if (distribution_.solve(feet_from_com, force_limit, wrench_, solved_forces_) == qp::QpStatus::Solved) {
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) force_limit[leg] = stance[leg] ? target.force_z_max_n[leg] : 0.0;
+  if (distribution_.solve(feet_from_com(state, rotation, config_.com_in_body), force_limit, wrench_, solved_forces_) ==
+      qp::QpStatus::Solved) {
     forces_ = solved_forces_;
   }
 

@@ -15,6 +15,19 @@ Eigen::Matrix3d rotation_from_rpy(const Eigen::Vector3d& rpy) {
       .toRotationMatrix();
 }
 
+Eigen::Vector3d rotation_error(const Eigen::Matrix3d& desired, const Eigen::Matrix3d& actual) {
+  const Eigen::AngleAxisd error(desired * actual.transpose());
+  return error.angle() * error.axis();
+}
+
+std::array<Eigen::Vector3d, kNumLegs> feet_from_com(const RobotState& state, const Eigen::Matrix3d& rotation,
+                                                    const Eigen::Vector3d& com_in_body) {
+  std::array<Eigen::Vector3d, kNumLegs> feet{};
+  const Eigen::Vector3d com = rotation * com_in_body;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) feet[leg] = rotation * state.foot_position_body[leg] - com;
+  return feet;
+}
+
 double wrap_angle(double angle_rad) { return std::remainder(angle_rad, 2.0 * robot::kPi); }
 
 Eigen::Vector3d StanceFrame::body_rpy(const RobotState& state) const {

@@ -19,6 +19,11 @@ struct BodyPose {
 
 // rotation from ZYX angles: Rz(yaw) Ry(pitch) Rx(roll)
 Eigen::Matrix3d rotation_from_rpy(const Eigen::Vector3d& rpy);
+// the rotation that takes `actual` to `desired` as axis times angle (world axes): an attitude error
+Eigen::Vector3d rotation_error(const Eigen::Matrix3d& desired, const Eigen::Matrix3d& actual);
+// each foot's position relative to the centre of mass, level axes (rotation: body to level)
+std::array<Eigen::Vector3d, kNumLegs> feet_from_com(const RobotState& state, const Eigen::Matrix3d& rotation,
+                                                    const Eigen::Vector3d& com_in_body);
 // angle wrapped to (-pi, pi]
 double wrap_angle(double angle_rad);
 

@@ -60,10 +60,10 @@ inline constexpr double kBatteryCapacityAh = 4.5;
 // assumed: 6 high-drain cells of 10 mOhm. The robot jumps and flips from this pack: a push draws
 // 60-80 A, which a 0.12 ohm pack (20 mOhm cells) would sag below the drivers' 18 V cut-off
 inline constexpr double kBatteryInternalResistanceOhm = 0.06;
-inline constexpr double kIdleElectricalPowerW = 25.0;          // assumed: boards, sensors, fans
-inline constexpr double kDriverUnderVoltageV = 18.0;           // assumed: 3.0 V per cell
-inline constexpr double kDriverOverVoltageV = 26.0;            // assumed: above a full pack's 25.2 V
-inline constexpr double kDriverVoltageHysteresisV = 0.5;       // assumed: a tripped limit clears this far inside
+inline constexpr double kIdleElectricalPowerW = 25.0;     // assumed: boards, sensors, fans
+inline constexpr double kDriverUnderVoltageV = 18.0;      // assumed: 3.0 V per cell
+inline constexpr double kDriverOverVoltageV = 26.0;       // assumed: above a full pack's 25.2 V
+inline constexpr double kDriverVoltageHysteresisV = 0.5;  // assumed: a tripped limit clears this far inside
 // assumed: the drivers' bus capacitors and trip debounce; a millisecond current spike of a
 // landing does not trip them, a sagging pack does
 inline constexpr double kDriverBusFilterS = 0.02;

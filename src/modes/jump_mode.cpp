@@ -46,8 +46,8 @@ StartRefusal JumpMode::start_refusal(const RobotState& state, const HighLevelCom
     switch (flip_gate(state, front ? Flip::Front : Flip::Back)) {
       case FlipGate::OverHeat: return {SwitchStatus::OverHeat, "flip refused: a motor is above 74 deg C"};
       case FlipGate::LowBattery:
-        return {SwitchStatus::LowBattery, front ? "front flip refused: battery below 50 %"
-                                                : "back flip refused: battery below 20 %"};
+        return {SwitchStatus::LowBattery,
+                front ? "front flip refused: battery below 50 %" : "back flip refused: battery below 20 %"};
       case FlipGate::Allowed: break;
     }
     return {SwitchStatus::BanTransition, "flips are not available yet in this MC (docs/jumps.md)"};

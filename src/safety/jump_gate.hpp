@@ -9,11 +9,11 @@
 namespace cerebellum {
 
 struct JumpGateLimits {
-  double max_speed_m_s = 0.3;     // trunk speed over the ground
+  double max_speed_m_s = 0.3;  // trunk speed over the ground
   double max_yaw_rate_rad_s = 0.5;
-  double max_tilt_rad = 0.25;     // trunk roll or pitch
-  double max_slope_rad = 0.09;    // ground plane (about 5 deg)
-  double min_height_m = 0.15;     // standing, not lying
+  double max_tilt_rad = 0.25;   // trunk roll or pitch
+  double max_slope_rad = 0.09;  // ground plane (about 5 deg)
+  double min_height_m = 0.15;   // standing, not lying
   int min_feet_down = 4;
 };
 

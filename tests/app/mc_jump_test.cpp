@@ -33,8 +33,8 @@ double degrees(double rad) { return rad * 180.0 / robot::kPi; }
 struct JumpOutcome {
   Eigen::Vector2d displacement_m = Eigen::Vector2d::Zero();  // heading frame at the start
   double turn_rad = 0.0;
-  double rise_m = 0.0;         // highest trunk above its start
-  double final_drop_m = 0.0;   // trunk height at the start minus at the end
+  double rise_m = 0.0;        // highest trunk above its start
+  double final_drop_m = 0.0;  // trunk height at the start minus at the end
   double largest_tilt_rad = 0.0;
   bool reported_the_jump = false;  // the response showed the mode and jump id while it ran
   bool progress_never_fell = true;

@@ -191,11 +191,10 @@ void JumpController::push(const RobotState& state, JointCommand& command) {
   const Eigen::Vector3d omega = frame_.angular_velocity(state);
 
   const BalanceConfig& body = config_.stand.balance;
-  const Eigen::Vector3d acceleration = a + config_.push_kp.cwiseProduct(position_des - position) +
-                                       config_.push_kd.cwiseProduct(velocity_des - velocity);
+  const Eigen::Vector3d acceleration =
+      a + config_.push_kp.cwiseProduct(position_des - position) + config_.push_kd.cwiseProduct(velocity_des - velocity);
   const Eigen::Matrix3d rotation_des = rotation_from_rpy(rpy_des);
-  const Eigen::AngleAxisd rotation_error(rotation_des * rotation.transpose());
-  const Eigen::Vector3d angle_error = rotation_error.angle() * rotation_error.axis();
+  const Eigen::Vector3d angle_error = rotation_error(rotation_des, rotation);
   const Eigen::Vector3d angular_acceleration = angular_acceleration_ff +
                                                config_.push_orientation_kp.cwiseProduct(angle_error) +
                                                config_.push_orientation_kd.cwiseProduct(omega_des - omega);
@@ -205,27 +204,26 @@ void JumpController::push(const RobotState& state, JointCommand& command) {
   wrench.head<3>() = body.mass_kg * (plan_.momentum_map * acceleration + Eigen::Vector3d(0.0, 0.0, kGravityMPerS2));
   wrench.tail<3>() = inertia * angular_acceleration;
 
-  std::array<Eigen::Vector3d, kNumLegs> feet_from_com{};
   std::array<double, kNumLegs> force_limit{};
-  const Eigen::Vector3d com = rotation * body.com_in_body;
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    feet_from_com[leg] = rotation * state.foot_position_body[leg] - com;
-    force_limit[leg] = config_.push_distribution.force_z_max_n;
-  }
+  force_limit.fill(config_.push_distribution.force_z_max_n);
   std::array<Eigen::Vector3d, kNumLegs> solved{};
-  if (distribution_.solve(feet_from_com, force_limit, wrench, solved) == qp::QpStatus::Solved) forces_ = solved;
+  if (distribution_.solve(feet_from_com(state, rotation, body.com_in_body), force_limit, wrench, solved) ==
+      qp::QpStatus::Solved)
+    forces_ = solved;
 
   const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravityMPerS2);
   const Eigen::Matrix3d rotation_des_t = rotation_des.transpose();
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const Eigen::Vector3d q = leg_vector(state.q, leg);
     const Eigen::Matrix3d jacobian = foot_jacobian(leg, q);
-    const Eigen::Vector3d tau = leg_gravity_torque(leg, q, gravity_body) - jacobian.transpose() * (rotation.transpose() * forces_[leg]);
+    const Eigen::Vector3d tau =
+        leg_gravity_torque(leg, q, gravity_body) - jacobian.transpose() * (rotation.transpose() * forces_[leg]);
     // the joints follow the planned path too: the foot where it stands, seen from the planned trunk
     const Eigen::Vector3d foot_body = rotation_des_t * (frame_.foothold(leg) - position_des);
     const LegIkResult ik = inverse_kinematics_in_body(leg, foot_body);
     // the foot stands still: its body-frame velocity is -R' v - omega x foot
-    const Eigen::Vector3d foot_velocity = -rotation_des_t * velocity_des - (rotation_des_t * omega_des).cross(foot_body);
+    const Eigen::Vector3d foot_velocity =
+        -rotation_des_t * velocity_des - (rotation_des_t * omega_des).cross(foot_body);
     Eigen::Vector3d qd = Eigen::Vector3d::Zero();
     const Eigen::Matrix3d ik_jacobian = foot_jacobian(leg, ik.q);
     if (std::abs(ik_jacobian.determinant()) > 1e-5) qd = ik_jacobian.inverse() * foot_velocity;
@@ -248,9 +246,9 @@ bool JumpController::push_done(const RobotState& state, double t) const {
 void JumpController::fly(const RobotState& state, JointCommand& command) {
   const double t = state.time_s - phase_start_s_;
   const double s = smooth_step(std::clamp(t / config_.swing_duration_s, 0.0, 1.0));
-  // the landing pose: each foot where it stood before the jump (relative to the trunk), ahead by the planned offset, at the
-  // touchdown height below the trunk, whatever the trunk's attitude
-  // in the trunk's heading now: the offset turns back by the yaw since take-off
+  // the landing pose: each foot where it stood before the jump (relative to the trunk), ahead by the planned offset, at
+  // the touchdown height below the trunk, whatever the trunk's attitude in the trunk's heading now: the offset turns
+  // back by the yaw since take-off
   const Eigen::Vector3d rpy = frame_.body_rpy(state);
   const Eigen::Matrix3d tilt = rotation_from_rpy(Eigen::Vector3d(rpy.x(), rpy.y(), 0.0));
   const Eigen::Vector3d offset = rotation_from_rpy(Eigen::Vector3d(0.0, 0.0, -rpy.z())) *

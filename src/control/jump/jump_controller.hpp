@@ -31,8 +31,8 @@ struct JumpControllerConfig {
   Eigen::Vector3d push_kd{20.0, 20.0, 20.0};
   Eigen::Vector3d push_orientation_kp{300.0, 300.0, 150.0};
   Eigen::Vector3d push_orientation_kd{25.0, 25.0, 20.0};
-  ForceDistributionConfig push_distribution{0.75, 260.0,
-                                            (Vector6d() << 1.0, 1.0, 1.0, 40.0, 40.0, 40.0).finished(), 1e-4};
+  ForceDistributionConfig push_distribution{0.75, 260.0, (Vector6d() << 1.0, 1.0, 1.0, 40.0, 40.0, 40.0).finished(),
+                                            1e-4};
   // past its planned time the push goes on until the trunk is this fast (share of the planned
   // velocity), the legs this much further extended, or this share of the time has passed
   double takeoff_speed_fraction = 0.97;

@@ -66,8 +66,9 @@ Eigen::Vector3d standing_angular_momentum(const std::array<Eigen::Vector3d, 4>& 
     }
     // the links also spin: all three about the abad axis, thigh and shank about the pitch axis
     // (link axes taken as the body's: the abad joint stays near zero)
-    angular.x() += (robot::kAbadLink.inertia_xx_kg_m2 + robot::kThighLink.inertia_xx_kg_m2 +
-                    robot::kShankLink.inertia_xx_kg_m2) * qd.x();
+    angular.x() +=
+        (robot::kAbadLink.inertia_xx_kg_m2 + robot::kThighLink.inertia_xx_kg_m2 + robot::kShankLink.inertia_xx_kg_m2) *
+        qd.x();
     angular.y() += robot::kThighLink.inertia_yy_kg_m2 * qd.y() + robot::kShankLink.inertia_yy_kg_m2 * (qd.y() + qd.z());
   }
   // the trunk: the rest of the mass (the body and the abad rotors, symmetric about its centre) at
@@ -172,7 +173,8 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
     u = limits.max_horizontal_speed_m_s;
     plan.shortfall |= kJumpLandingLimited;
   }
-  const double u_speed = std::sqrt(std::max(limits.max_takeoff_speed_m_s * limits.max_takeoff_speed_m_s - vz * vz, 0.0));
+  const double u_speed =
+      std::sqrt(std::max(limits.max_takeoff_speed_m_s * limits.max_takeoff_speed_m_s - vz * vz, 0.0));
   if (u > u_speed) {
     u = u_speed;
     plan.shortfall |= kJumpSpeedLimited;

@@ -32,14 +32,14 @@ struct JumpLimits {
   double stand_height_m = 0.235;
   double crouch_height_m = 0.13;
   double takeoff_height_m = 0.27;
-  double touchdown_height_m = 0.25;  // trunk above the landing ground when the feet touch
+  double touchdown_height_m = 0.25;     // trunk above the landing ground when the feet touch
   double min_vertical_speed_m_s = 1.2;  // lowest hop: the legs swing to the landing pose in the air
   double max_takeoff_speed_m_s = 2.6;   // centre of mass; the legs' extension speed (motors' speed-torque curve)
   double friction_mu = 0.6;             // planned horizontal push within this share of the normal force
   double max_vertical_force_n = 520.0;  // the four legs together at the push's knee angles
   double mass_kg = robot::kTotalMassKg;
   std::array<double, 3> inertia_diag = robot::kMpcInertiaDiag;  // whole body, about its centre of mass
-  double landing_braking_m_s2 = 8.0;  // horizontal deceleration the landing stand gives
+  double landing_braking_m_s2 = 8.0;                            // horizontal deceleration the landing stand gives
   // the fastest horizontal take-off (centre of mass) whose landing the stand absorbs: faster, the
   // feet land so far ahead that the trunk pitches over them
   double max_horizontal_speed_m_s = 1.2;
@@ -66,7 +66,7 @@ struct JumpPlan {
   // carries it: the legs, half the robot's mass, are still at rest at their feet
   Eigen::Vector3d com_takeoff_velocity_m_s = Eigen::Vector3d::Zero();
   Eigen::Vector3d takeoff_velocity_m_s = Eigen::Vector3d::Zero();
-  Eigen::Matrix3d momentum_map = Eigen::Matrix3d::Identity();  // standing_momentum_map at take-off
+  Eigen::Matrix3d momentum_map = Eigen::Matrix3d::Identity();        // standing_momentum_map at take-off
   Eigen::Vector3d push_acceleration_m_s2 = Eigen::Vector3d::Zero();  // constant, gravity not included
   Eigen::Vector3d push_stroke_m = Eigen::Vector3d::Zero();           // trunk travel during the push
   double yaw_rate_rad_s = 0.0;                                       // at take-off
@@ -74,9 +74,9 @@ struct JumpPlan {
   // momentum (the extending legs carry some): the flight stays level
   Eigen::Vector2d takeoff_tilt_rate_rad_s = Eigen::Vector2d::Zero();
   double flight_duration_s = 0.0;
-  Eigen::Vector3d flight_travel_m = Eigen::Vector3d::Zero();  // trunk, take-off to touchdown
+  Eigen::Vector3d flight_travel_m = Eigen::Vector3d::Zero();        // trunk, take-off to touchdown
   Eigen::Vector2d landing_foot_offset_m = Eigen::Vector2d::Zero();  // feet ahead of the trunk at touchdown
-  double apex_height_m = 0.0;  // trunk above the take-off ground
+  double apex_height_m = 0.0;                                       // trunk above the take-off ground
   unsigned shortfall = kJumpReachable;
   // what the plan reaches (equals the target when shortfall is 0)
   Eigen::Vector2d planned_displacement_m = Eigen::Vector2d::Zero();

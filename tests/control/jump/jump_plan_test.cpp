@@ -202,8 +202,8 @@ TEST(JumpPlan, TheStandingLegsMomentumMatchesTheSimulatorsForTheSameModel) {
     // angular: the links' spin taken about the body's axes, products of inertia left out: within
     // 0.03 N m s of the simulator's (a jump's push carries about 0.3)
     const Eigen::Vector3d angular = standing_angular_momentum(q, v, robot::kTotalMassKg);
-    EXPECT_LT((angular - sim.angular).norm(), 0.03) << "trial " << trial << ": " << angular.transpose() << " vs "
-                                                    << sim.angular.transpose();
+    EXPECT_LT((angular - sim.angular).norm(), 0.03)
+        << "trial " << trial << ": " << angular.transpose() << " vs " << sim.angular.transpose();
   }
 }
 
