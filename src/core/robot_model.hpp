@@ -90,6 +90,10 @@ inline constexpr double kRotorMassKg = 0.0567;
 inline constexpr double kHipRotorOffsetM = 0.0758;   // along the abad link, from the abad joint
 inline constexpr double kKneeRotorOffsetM = 0.0342;  // along the thigh, from the hip joint
 
+// the trunk's height above the ground in the default stand (cyberdog2-highlevel.md: mode 3's
+// default height)
+inline constexpr double kStandHeightM = 0.235;
+
 // default poses per leg (abad, hip, knee), SDK convention
 inline constexpr std::array<double, 3> kStandPose{0.0, deg(45.0), deg(-70.0)};
 inline constexpr std::array<double, 3> kLyingPose{0.0, deg(80.0), deg(-135.0)};

@@ -4,6 +4,7 @@
 
 #include <Eigen/Core>
 
+#include "core/robot_model.hpp"
 #include "modes/high_level_command.hpp"
 
 namespace cerebellum {
@@ -15,7 +16,7 @@ struct Range {
 };
 
 // the body height of the standing modes when a command gives none (pos_des[2] <= 0)
-inline constexpr double kDefaultBodyHeightM = 0.235;
+inline constexpr double kDefaultBodyHeightM = robot::kStandHeightM;
 
 // mode 3 (QP stand): roll, pitch absolute, yaw relative; x, y offsets; height absolute
 struct QpStandRanges {

@@ -27,7 +27,6 @@ WalkingGaitsConfig walking_config(const ModeSetConfig& config) {
 
 JumpControllerConfig jump_config(const ModeSetConfig& config) {
   JumpControllerConfig jump = default_jump_controller_config();
-  jump.tick_s = config.loop_period_s;
   jump.damping_kd = config.damping_kd;
   return jump;
 }

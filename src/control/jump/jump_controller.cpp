@@ -67,7 +67,6 @@ void JumpController::start(const RobotState& state, const JumpPlan& plan) {
   plan_ = plan;
   phase_ = JumpPhase::Crouch;
   start_s_ = phase_start_s_ = last_time_s_ = state.time_s;
-  takeoff_s_ = touchdown_s_ = 0.0;
   centred_ = false;
   // the feet land where they stood, seen from the trunk: the stand ends as far from them as it began
   StanceFrame level;
@@ -107,13 +106,13 @@ void JumpController::begin_push(const RobotState& state) {
 
 void JumpController::begin_flight(const RobotState& state) {
   phase_ = JumpPhase::Flight;
-  phase_start_s_ = takeoff_s_ = state.time_s;
+  phase_start_s_ = state.time_s;
   takeoff_q_ = state.q;
 }
 
 void JumpController::begin_landing(const RobotState& state) {
   phase_ = JumpPhase::Landing;
-  phase_start_s_ = touchdown_s_ = state.time_s;
+  phase_start_s_ = state.time_s;
   stand_.start(state);
   QpStandGoal brake;
   brake.pose.position = {0.0, 0.0, config_.limits.stand_height_m};

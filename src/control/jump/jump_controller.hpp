@@ -23,7 +23,6 @@ namespace cerebellum {
 
 struct JumpControllerConfig {
   JumpLimits limits;
-  double tick_s = 0.002;
   double crouch_duration_s = 0.4;
   double crouch_settle_s = 0.1;
   // push: trunk tracking on top of the planned acceleration (per m, per m/s as accelerations)
@@ -81,13 +80,8 @@ class JumpController {
   double progress() const;
   bool finished() const { return phase_ == JumpPhase::Standing || phase_ == JumpPhase::Failed; }
   bool failed() const { return phase_ == JumpPhase::Failed; }
-  // the jump is in the air or has just landed: the robot is not "lifted" and may leave its feet
-  bool airborne() const { return phase_ == JumpPhase::Push || phase_ == JumpPhase::Flight; }
   const JumpPlan& plan() const { return plan_; }
   const JumpControllerConfig& config() const { return config_; }
-  // time the trunk left the ground and touched down again (robot time), for reports
-  double takeoff_time_s() const { return takeoff_s_; }
-  double touchdown_time_s() const { return touchdown_s_; }
 
  private:
   void begin_push(const RobotState& state);
@@ -108,8 +102,6 @@ class JumpController {
   double phase_start_s_ = 0.0;
   double start_s_ = 0.0;
   double last_time_s_ = 0.0;
-  double takeoff_s_ = 0.0;
-  double touchdown_s_ = 0.0;
   bool centred_ = false;
   Eigen::Vector3d push_origin_ = Eigen::Vector3d::Zero();  // trunk at the push's start (stance frame)
   JointArray<double> takeoff_q_{};

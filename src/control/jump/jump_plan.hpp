@@ -29,7 +29,7 @@ struct JumpTarget {
 };
 
 struct JumpLimits {
-  double stand_height_m = 0.235;
+  double stand_height_m = robot::kStandHeightM;
   double crouch_height_m = 0.13;
   double takeoff_height_m = 0.27;
   double touchdown_height_m = 0.25;     // trunk above the landing ground when the feet touch
