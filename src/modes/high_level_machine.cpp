@@ -252,8 +252,9 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
   while (const auto input = inbox_.try_pop()) {
     if (holds_lease(*input)) take_input(*input);
   }
-  // a client that went silent: get-down protection
-  if (queue_.timed_out(state.time_s)) {
+  // a client that went silent: get-down protection; a jump in the air lands first (damping a
+  // robot in flight would drop it), the protection follows once it stands
+  if (queue_.timed_out(state.time_s) && !current_->airborne()) {
     counters_.timeouts.fetch_add(1, std::memory_order_relaxed);
     queue_.clear();
     applied_generation_ = queue_.generation();

@@ -208,6 +208,30 @@ TEST(McJumps, AFlipIsRefusedForLowBatteryBeforeItIsRefusedAsUnavailable) {
   EXPECT_GT(run.truth().position[2], 0.2);
 }
 
+TEST(McJumps, AClientThatVanishesMidJumpHasTheRobotLandBeforeItIsDamped) {
+  JumpRun run;
+  // the command, a heartbeat or two, then silence from the crouch on
+  run.client.run(jump_command(4), 0.15);
+  bool damped_before_landing = false;
+  bool damped = false;
+  double largest_tilt = 0.0;
+  for (int tick = 0; tick < 1500; ++tick) {
+    run.mc.loop().tick();
+    const HighLevelStatus& s = run.mc.machine().status();
+    if (s.mode == static_cast<int>(ModeId::PureDamper) && !damped) {
+      damped = true;
+      damped_before_landing = !run.mc.modes().jump().controller().finished();
+    }
+    const Eigen::Vector3d rpy = testing::truth_rpy(run.truth());
+    largest_tilt = std::max({largest_tilt, std::abs(rpy.x()), std::abs(rpy.y())});
+  }
+  // the timeout's protection still comes, once the jump stands on its feet
+  EXPECT_TRUE(damped);
+  EXPECT_FALSE(damped_before_landing);
+  EXPECT_LT(largest_tilt, 0.6);
+  EXPECT_EQ(run.mc.machine().counters().timeouts.load(), 1u);
+}
+
 TEST(McJumps, ALandingKnockedOverInTheAirEndsInDampingAndTheRecoveryStandRightsTheRobot) {
   JumpRun run;
   // a hard shove sideways just after take-off (about 0.7 s into the jump)
