@@ -209,6 +209,14 @@ SensorFrame FaultInjectingBackend::read() {
       case FaultKind::OverTemperature:
         frame.temperature_c[i] = std::max(frame.temperature_c[i], kInjectedCoilTemperatureC);
         break;
+      case FaultKind::Hot: {
+        // the driver warns and stops at the temperature it reads
+        frame.temperature_c[i] = std::max(frame.temperature_c[i], motor.value);
+        constexpr std::uint32_t kTemperatureBits = kMotorOverTemperature | kMotorTemperatureWarning;
+        frame.motor_faults[i] |=
+            motor_driver_faults(frame.temperature_c[i], frame.battery.voltage_v) & kTemperatureBits;
+        break;
+      }
       default: break;
     }
   }

@@ -24,7 +24,7 @@ struct KindWord {
 constexpr double kRequired = std::numeric_limits<double>::quiet_NaN();
 
 // one home for every fault's word, value and range
-const std::array<KindWord, 19> kKinds{{
+const std::array<KindWord, 20> kKinds{{
     {FaultTarget::Motor, FaultKind::Disconnected, "disconnected", false, 0, 0, 0},
     {FaultTarget::Motor, FaultKind::OverTemperature, "over_temperature", false, 0, 0, 0},
     {FaultTarget::Motor, FaultKind::DriverFault, "driver_fault", false, 0, 0, 0},
@@ -35,6 +35,7 @@ const std::array<KindWord, 19> kKinds{{
     {FaultTarget::Motor, FaultKind::EncoderLost, "encoder_lost", false, 0, 0, 0},
     {FaultTarget::Motor, FaultKind::Stuck, "stuck", false, 0, 0, 0},
     {FaultTarget::Motor, FaultKind::Derated, "derated", true, 0.0, 1.0, kRequired},
+    {FaultTarget::Motor, FaultKind::Hot, "hot", true, 20.0, 120.0, kRequired},
     {FaultTarget::Imu, FaultKind::ImuBias, "bias", true, -1.0, 1.0, kRequired},
     {FaultTarget::Imu, FaultKind::ImuStuck, "stuck", false, 0, 0, 0},
     {FaultTarget::Imu, FaultKind::ImuDropout, "dropout", false, 0, 0, 0},
@@ -104,7 +105,7 @@ std::string kinds_of(FaultTarget target) {
 
 const char* fault_grammar() {
   return "motor N disconnected|over_temperature|driver_fault|under_voltage|over_voltage|over_current|overload|"
-         "encoder_lost|stuck|derated FRACTION; imu bias RAD_S|stuck|dropout|nan; battery soc PERCENT|drain "
+         "encoder_lost|stuck|derated FRACTION|hot DEG_C; imu bias RAD_S|stuck|dropout|nan; battery soc PERCENT|drain "
          "FACTOR|capacity AH|sag VOLTS; foot LEG slippery [MU]; clear [motor N|imu|battery|foot LEG]; "
          "each optionally followed by: for SECONDS";
 }

@@ -32,6 +32,8 @@ enum class FaultKind {
   // motor, silent: a seized joint, a weak motor
   Stuck,
   Derated,
+  // motor: its coil reads at least this warm (deg C); the driver answers it as a real temperature
+  Hot,
   // IMU
   ImuBias,
   ImuStuck,

@@ -232,6 +232,25 @@ TEST(McJumps, AClientThatVanishesMidJumpHasTheRobotLandBeforeItIsDamped) {
   EXPECT_EQ(run.mc.machine().counters().timeouts.load(), 1u);
 }
 
+TEST(McJumps, AFlipIsRefusedWithOverHeatWhileAMotorReadsAboveSeventyFourDegrees) {
+  JumpRun run;
+  // warm, below the driver's 82 deg C warning: the robot stands on, only a flip is refused
+  ASSERT_EQ(run.mc.faults()->request(parse_fault("motor RL_knee hot 78").request.value()), "");
+  run.client.run(high_level_command(ModeId::Locomotion, 1), 0.5);
+  run.client.run(jump_command(kBackFlipGaitId), 0.3);
+  EXPECT_EQ(run.mc.machine().status().switch_status, SwitchStatus::OverHeat);
+  EXPECT_EQ(run.mc.machine().status().mode, 11);
+  // an ordinary jump is still allowed at that temperature
+  run.client.run(high_level_command(ModeId::Locomotion, 1), 0.5);
+  const JumpOutcome jump = run.jump(jump_command(4), 3.0);
+  expect_landed_and_standing(jump, 16, 4);
+  // hotter than the warning: the driver's warning bit, and the reference's high damping
+  ASSERT_EQ(run.mc.faults()->request(parse_fault("motor RL_knee hot 84").request.value()), "");
+  run.client.run(high_level_command(ModeId::Locomotion, 1), 0.3);
+  EXPECT_EQ(run.mc.machine().status().switch_status, SwitchStatus::HighDamping);
+  EXPECT_NE(run.mc.machine().status().motor_faults[11] & kMotorTemperatureWarning, 0u);
+}
+
 TEST(McJumps, ALandingKnockedOverInTheAirEndsInDampingAndTheRecoveryStandRightsTheRobot) {
   JumpRun run;
   // a hard shove sideways just after take-off (about 0.7 s into the jump)

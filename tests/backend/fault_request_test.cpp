@@ -36,6 +36,7 @@ TEST(FaultRequest, EveryFaultReadsBackFromItsText) {
                            "motor 4 over_voltage", "motor 5 over_current",
                            "motor 6 overload",     "motor 7 encoder_lost",
                            "motor 8 stuck",        "motor 9 derated 0.5",
+                           "motor 10 hot 78",
                            "imu bias -0.02",       "imu stuck",
                            "imu dropout",          "imu nan",
                            "battery soc 15",       "battery drain 20",
@@ -57,6 +58,7 @@ TEST(FaultRequest, BadInputIsRefusedWithWhatIsAccepted) {
             std::string::npos);
   EXPECT_NE(refusal("motor 12 disconnected").find("motor must be 0..11"), std::string::npos);
   EXPECT_NE(refusal("motor 1.5 disconnected").find("motor must be 0..11"), std::string::npos);
+  EXPECT_NE(refusal("motor 3 hot 150").find("120"), std::string::npos);
   EXPECT_NE(refusal("motor 3 melted").find("unknown motor fault 'melted' (accepted: disconnected,"), std::string::npos);
   EXPECT_NE(refusal("motor 3 derated").find("needs a value in [0, 1]"), std::string::npos);
   EXPECT_NE(refusal("motor 3 derated 1.5").find("must be a number in [0, 1], got '1.5'"), std::string::npos);
