@@ -10,6 +10,7 @@
 #include "control/stand_up_controller.hpp"
 #include "core/leg_kinematics.hpp"
 #include "core/robot_model.hpp"
+#include "safety/damping_command.hpp"
 
 namespace cerebellum {
 namespace {
@@ -166,9 +167,8 @@ void JumpController::compute(const RobotState& state, JointCommand& command) {
       return;
     case JumpPhase::Failed: break;
   }
-  // failed: damp every joint, no stiffness, no torque
-  command = passive_command();
-  command.kd.fill(config_.damping_kd);
+  // failed: the protective stops' joint damping
+  command = damping_command(config_.damping_kd);
 }
 
 void JumpController::push(const RobotState& state, JointCommand& command) {
@@ -245,9 +245,9 @@ bool JumpController::push_done(const RobotState& state, double t) const {
 void JumpController::fly(const RobotState& state, JointCommand& command) {
   const double t = state.time_s - phase_start_s_;
   const double s = smooth_step(std::clamp(t / config_.swing_duration_s, 0.0, 1.0));
-  // the landing pose: each foot where it stood before the jump (relative to the trunk), ahead by the planned offset, at
-  // the touchdown height below the trunk, whatever the trunk's attitude in the trunk's heading now: the offset turns
-  // back by the yaw since take-off
+  // the landing pose: each foot where it stood before the jump (relative to the trunk), ahead by
+  // the planned offset, at the touchdown height below the trunk, whatever the trunk's attitude.
+  // The offset is in the take-off heading: it turns back by the yaw since take-off
   const Eigen::Vector3d rpy = frame_.body_rpy(state);
   const Eigen::Matrix3d tilt = rotation_from_rpy(Eigen::Vector3d(rpy.x(), rpy.y(), 0.0));
   const Eigen::Vector3d offset = rotation_from_rpy(Eigen::Vector3d(0.0, 0.0, -rpy.z())) *
