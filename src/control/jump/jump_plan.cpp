@@ -90,6 +90,17 @@ Eigen::Vector2d planned_displacement(const JumpPlan& plan) {
 
 namespace {
 
+// the legs at take-off and their momentum map: computed once per plan
+struct TakeoffLegs {
+  std::array<Eigen::Vector3d, kNumLegs> legs;
+  Eigen::Matrix3d momentum;
+};
+TakeoffLegs takeoff_legs_of(const JumpLimits& limits) {
+  TakeoffLegs takeoff{legs_at_height(limits.takeoff_height_m), Eigen::Matrix3d::Identity()};
+  takeoff.momentum = standing_momentum_map(takeoff.legs, limits.mass_kg);
+  return takeoff;
+}
+
 // the fastest vertical take-off (centre of mass) and what limits it: the push's force over the
 // stroke (v^2 = 2 s K_zz (F / m - g)) or the legs' extension speed
 struct VerticalCap {
@@ -105,9 +116,10 @@ VerticalCap vertical_speed_cap(const JumpLimits& limits, const Eigen::Matrix3d& 
 }
 
 // every figure that follows from the centre of mass's take-off velocity
-void finish_plan(JumpPlan& plan, const Eigen::Vector3d& com_velocity, double drop_m, const JumpLimits& limits) {
-  const std::array<Eigen::Vector3d, kNumLegs> takeoff_legs = legs_at_height(limits.takeoff_height_m);
-  const Eigen::Matrix3d momentum = standing_momentum_map(takeoff_legs, limits.mass_kg);
+void finish_plan(JumpPlan& plan, const Eigen::Vector3d& com_velocity, double drop_m, const JumpLimits& limits,
+                 const TakeoffLegs& takeoff) {
+  const std::array<Eigen::Vector3d, kNumLegs>& takeoff_legs = takeoff.legs;
+  const Eigen::Matrix3d& momentum = takeoff.momentum;
   plan.crouch_height_m = limits.crouch_height_m;
   plan.takeoff_height_m = limits.takeoff_height_m;
   plan.momentum_map = momentum;
@@ -137,7 +149,8 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
   const double drop_m = limits.takeoff_height_m - (target.landing_ground_m + limits.touchdown_height_m);
 
   // the trunk's take-off velocity that gives the centre of mass its own (near diagonal map)
-  const Eigen::Matrix3d momentum = standing_momentum_map(legs_at_height(limits.takeoff_height_m), limits.mass_kg);
+  const TakeoffLegs takeoff = takeoff_legs_of(limits);
+  const Eigen::Matrix3d& momentum = takeoff.momentum;
   // trunk horizontal speed per centre-of-mass speed
   const double horizontal_gain = 2.0 / (momentum(0, 0) + momentum(1, 1));
 
@@ -188,7 +201,7 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
     plan.shortfall |= kJumpFrictionLimited;
   }
   Eigen::Vector3d com_velocity(u * direction.x(), u * direction.y(), vz);
-  finish_plan(plan, com_velocity, drop_m, limits);
+  finish_plan(plan, com_velocity, drop_m, limits, takeoff);
   // the legs' momentum couples the trunk's horizontal and vertical speeds: correct the centre of
   // mass's horizontal speed until the displacements add up to the target (when reachable)
   if (plan.shortfall == kJumpReachable) {
@@ -199,7 +212,7 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
       // never past the landing's limit (the correction is a few millimetres)
       const double speed = com_velocity.head<2>().norm();
       if (speed > max_h) com_velocity.head<2>() *= max_h / speed;
-      finish_plan(plan, com_velocity, drop_m, limits);
+      finish_plan(plan, com_velocity, drop_m, limits, takeoff);
     }
   }
   // the yaw turns at a constant rate from mid-push to touchdown
@@ -212,7 +225,8 @@ JumpPlan plan_force_jump(const Eigen::Vector3d& acceleration, double yaw_acceler
   JumpPlan plan;
   const double stroke_z = limits.takeoff_height_m - limits.crouch_height_m;
   const double drop_m = limits.takeoff_height_m - limits.touchdown_height_m;
-  const Eigen::Matrix3d momentum = standing_momentum_map(legs_at_height(limits.takeoff_height_m), limits.mass_kg);
+  const TakeoffLegs takeoff = takeoff_legs_of(limits);
+  const Eigen::Matrix3d& momentum = takeoff.momentum;
   // the asked acceleration of the centre of mass; NaN or Inf asks nothing
   Eigen::Vector3d a = acceleration;
   for (Eigen::Index k = 0; k < 3; ++k) {
@@ -242,7 +256,7 @@ JumpPlan plan_force_jump(const Eigen::Vector3d& acceleration, double yaw_acceler
     plan.shortfall |= u_speed < limits.max_horizontal_speed_m_s ? kJumpSpeedLimited : kJumpLandingLimited;
     com.head<2>() *= u_max / com.head<2>().norm();
   }
-  finish_plan(plan, com, drop_m, limits);
+  finish_plan(plan, com, drop_m, limits, takeoff);
   // the turn: the asked yaw acceleration through the push, within the turn a jump may make
   const double asked_yaw = std::isfinite(yaw_acceleration) ? yaw_acceleration : 0.0;
   const double max_rate = limits.max_turn_rad / (0.5 * plan.push_duration_s + plan.flight_duration_s);
