@@ -7,10 +7,12 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 # -O1 and line tables only (build type Sanitize adds no flags of its own): what the sanitizers'
 # documentation recommends, and quicker to compile than RelWithDebInfo (-O2 -g)
 flags="-O1 -gline-tables-only -fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+# the configure output goes to a log beside the build tree (quiet CI output; kept out of git)
 CC=clang CXX=clang++ cmake -S "$root" -B "$root/build-sanitize" -DCMAKE_BUILD_TYPE=Sanitize \
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DCEREBELLUM_FUZZ=ON -DCEREBELLUM_SANITIZED=ON -DCEREBELLUM_BUILD_BENCH=OFF > "$root/build-sanitize.configure.log"
+  -DCEREBELLUM_FUZZ=ON -DCEREBELLUM_SANITIZED=ON -DCEREBELLUM_BUILD_BENCH=OFF > "$root/build-sanitize.configure.log" ||
+  { cat "$root/build-sanitize.configure.log"; exit 1; }
 if [[ $# -gt 0 ]]; then
   cmake --build "$root/build-sanitize" -j"$(nproc)" --target "$@"
 else
