@@ -1,10 +1,10 @@
 // Push sweep: which shoves the robot survives, trotting in place (11/3) and in the two stands (11/1
 // with push recovery, 11/31 without), over impulses, four directions and five moments of the trot
-// cycle. The push is the `cerebellum push` disturbance (Simulation::request_force_pulse, 0.1 s on
-// the trunk); control runs on the robot's own estimate, the simulator's truth only scores. A run
-// survives when the trunk never tilts past 34 degrees and, 3 s after the push, moves slower than
-// 0.3 m/s; falls are counted apart. Prints a markdown table (docs/benchmarks.md).
-//   push_sweep_bench [--impulses=5,10,15,20,25,30] [--phases=5]
+// cycle. The push is the `cerebellum push` disturbance (Simulation::request_force_pulse on the
+// trunk, 0.1 s unless --push_s says otherwise); control runs on the robot's own estimate, the simulator's truth only
+// scores. A run survives when the trunk never tilts past 34 degrees and, 3 s after the push, moves slower than 0.3 m/s;
+// falls are counted apart. Prints a markdown table (docs/benchmarks.md).
+//   push_sweep_bench [--impulses=5,10,15,20,25,30] [--phases=5] [--push_s=0.1]
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -20,7 +20,6 @@ namespace {
 
 using namespace cerebellum;
 
-constexpr double kPushS = 0.1;
 constexpr double kSettleAfterPushS = 3.0;
 
 bool upright(const GroundTruth& g) {
@@ -36,7 +35,8 @@ struct Behaviour {
 enum class Outcome { Survived, StillMoving, Fell };
 
 // one run: stand up, take the gait for 2 s plus the phase offset, push, watch 3 s
-Outcome push_outcome(int gait_id, double impulse_n_s, const std::array<double, 2>& direction, double offset_s) {
+Outcome push_outcome(int gait_id, double impulse_n_s, double push_s, const std::array<double, 2>& direction,
+                     double offset_s) {
   McConfig config = default_config();
   config.startup = Startup::Off;
   config.robot.model_path = std::string(CEREBELLUM_MODEL_DIR) + "/cyberdog2.xml";
@@ -45,10 +45,10 @@ Outcome push_outcome(int gait_id, double impulse_n_s, const std::array<double, 2
   client.run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
   const HighLevelCommand gait = high_level_command(ModeId::Locomotion, gait_id);
   client.run(gait, 2.0 + offset_s);
-  const double force_n = impulse_n_s / kPushS;
-  mc.simulation().request_force_pulse({{force_n * direction[0], force_n * direction[1], 0.0}, kPushS});
+  const double force_n = impulse_n_s / push_s;
+  mc.simulation().request_force_pulse({{force_n * direction[0], force_n * direction[1], 0.0}, push_s});
   bool up = true;
-  client.run(gait, kPushS + kSettleAfterPushS,
+  client.run(gait, push_s + kSettleAfterPushS,
              [&](const CycleRecord&) { up &= upright(mc.simulation().ground_truth()); });
   const auto v = mc.simulation().ground_truth().velocity_world;
   if (!up) return Outcome::Fell;
@@ -67,10 +67,12 @@ std::vector<double> numbers(const std::string& text) {
 int main(int argc, char** argv) {
   std::vector<double> impulses{5, 10, 15, 20, 25, 30};
   int phases = 5;
+  double push_s = 0.1;
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg.rfind("--impulses=", 0) == 0) impulses = numbers(arg.substr(11));
     if (arg.rfind("--phases=", 0) == 0) phases = std::stoi(arg.substr(9));
+    if (arg.rfind("--push_s=", 0) == 0) push_s = std::stod(arg.substr(9));
   }
   const Behaviour behaviours[] = {{"trot in place (11/3)", 3},
                                   {"stand with push recovery (11/1)", kStandGaitId},
@@ -94,7 +96,7 @@ int main(int argc, char** argv) {
         int fell = 0;
         for (int phase = 0; phase < phases; ++phase) {
           const Outcome outcome =
-              push_outcome(behaviour.gait_id, impulse, direction.direction, trot_cycle_s * phase / phases);
+              push_outcome(behaviour.gait_id, impulse, push_s, direction.direction, trot_cycle_s * phase / phases);
           survived += outcome == Outcome::Survived;
           fell += outcome == Outcome::Fell;
         }
@@ -107,8 +109,9 @@ int main(int argc, char** argv) {
     }
   }
   std::printf(
-      "\nsurvived / runs per cell (%d moments of the %.2f s trot cycle); a run that did not fall but still moved "
+      "\nsurvived / runs per cell (%d moments of the %.2f s trot cycle), pushes of %.2f s; a run that did not fall but "
+      "still moved "
       "faster than 0.3 m/s 3 s after the push is not counted as survived\n",
-      phases, trot_cycle_s);
+      phases, trot_cycle_s, push_s);
   return 0;
 }

@@ -39,6 +39,7 @@ ModeSet::ModeSet(const ModeSetConfig& config)
       lifted_(default_lifted_config()),
       walking_(walking_config(config), std::make_unique<qp::GoldfarbIdnaniSolver>()),
       passive_trot_(walking_, PassiveFollowConfig{}, config.loop_period_s),
+      push_recovery_stand_(walking_, PushRecoveryStandConfig{}, config.loop_period_s),
       user_gait_(walking_, user_gait_slot_),
       locomotion_(gaits_),
       motions_(config.motions),
@@ -50,6 +51,8 @@ ModeSet::ModeSet(const ModeSetConfig& config)
   LocomotionGait& stand =
       config.locomotion_stand == LocomotionStand::Mpc ? static_cast<LocomotionGait&>(walking_) : qp_stand_gait_;
   for (const GaitSpec& gait : kGaitTable) gaits_.add(gait.id, gait_steps(gait) ? walking_ : stand);
+  // on the walking controller, gait 1 steps to recover from a push (31 stays planted)
+  if (config.locomotion_stand == LocomotionStand::Mpc) gaits_.add(kStandGaitId, push_recovery_stand_);
   // the passive trot drives the same controller, following pulls on the trunk
   gaits_.add(kPassiveTrotGaitId, passive_trot_);
   // the uploaded gait runs on it too

@@ -14,6 +14,7 @@
 #include "modes/passive_modes.hpp"
 #include "modes/passive_trot_gait.hpp"
 #include "modes/pose_control_mode.hpp"
+#include "modes/push_recovery_stand_gait.hpp"
 #include "modes/qp_stand_mode.hpp"
 #include "modes/recovery_stand_mode.hpp"
 #include "modes/user_gait.hpp"
@@ -46,6 +47,7 @@ class ModeSet {
   const WalkingGaits& walking() const { return walking_; }
   const LocomotionStandGait& qp_stand_gait() const { return qp_stand_gait_; }
   const PassiveTrotGait& passive_trot() const { return passive_trot_; }
+  const PushRecoveryStandGait& push_recovery_stand() const { return push_recovery_stand_; }
   const MotionMode& motion() const { return motion_; }
   const UserGaitRunner& user_gait() const { return user_gait_; }
   const JumpMode& jump() const { return jump_; }
@@ -65,6 +67,7 @@ class ModeSet {
   GaitRegistry gaits_;
   WalkingGaits walking_;
   PassiveTrotGait passive_trot_;
+  PushRecoveryStandGait push_recovery_stand_;
   UserGaitSlot user_gait_slot_;
   UserGaitRunner user_gait_;
   LocomotionStandGait qp_stand_gait_;

@@ -21,9 +21,14 @@ TEST(ModeSet, WalkingGaitsRunOnTheMpcTheStandsOnTheConfiguredControllerAndGaitFo
   for (LocomotionStand stand : {LocomotionStand::Mpc, LocomotionStand::Qp}) {
     const ModeSet modes(config_with(stand));
     for (int id : kWalkingGaitIds) EXPECT_EQ(modes.gaits().find(id), &modes.walking()) << id;
-    const LocomotionGait* expected_stand =
-        stand == LocomotionStand::Mpc ? static_cast<const LocomotionGait*>(&modes.walking()) : &modes.qp_stand_gait();
-    for (int id : kStandGaitIds) EXPECT_EQ(modes.gaits().find(id), expected_stand) << id;
+    // on the MPC, gait 1 is the stand that steps to recover from a push; 31 the plain one
+    const bool mpc = stand == LocomotionStand::Mpc;
+    EXPECT_EQ(modes.gaits().find(kStandGaitId),
+              mpc ? static_cast<const LocomotionGait*>(&modes.push_recovery_stand()) : &modes.qp_stand_gait());
+    EXPECT_EQ(modes.gaits().find(kStandWithoutPushRecoveryGaitId),
+              mpc ? static_cast<const LocomotionGait*>(&modes.walking()) : &modes.qp_stand_gait());
+    // the push recovery drives the walking controller itself
+    EXPECT_EQ(modes.push_recovery_stand().walking_controller(), &modes.walking());
     // the passive trot drives the walking controller itself, whichever stand is configured
     for (int id : kPassiveTrotGaitIds) EXPECT_EQ(modes.gaits().find(id), &modes.passive_trot()) << id;
   }

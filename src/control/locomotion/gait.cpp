@@ -85,6 +85,13 @@ void GaitScheduler::set_pattern(const GaitPattern& pattern) {
   time_in_segment_s_ = (position - segment_) * segment_s_;
 }
 
+void GaitScheduler::restart(const GaitPattern& pattern) {
+  sequence_.reset();
+  pattern_ = pattern;
+  segment_ = 0;
+  time_in_segment_s_ = 0.0;
+}
+
 void GaitScheduler::advance(double dt_s) {
   time_in_segment_s_ += dt_s;
   while (time_in_segment_s_ >= segment_s_ - 1e-12) {

@@ -55,6 +55,8 @@ class GaitScheduler {
 
   // switch pattern, keeping the cycle phase (fraction of the cycle) continuous; ends a sequence
   void set_pattern(const GaitPattern& pattern);
+  // switch pattern and begin its cycle from the start (a stand's phase means nothing to a gait)
+  void restart(const GaitPattern& pattern);
   const GaitPattern& pattern() const { return pattern_; }
   // play a sequence from its first segment; the pattern waits until set_pattern() is called again
   void play(std::shared_ptr<const ContactSequence> sequence);

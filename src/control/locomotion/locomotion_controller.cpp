@@ -292,7 +292,11 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
     next = variable_trot_pattern(stride_speed);
   }
   if (next.id == scheduler_.pattern().id && next.period_segments == scheduler_.pattern().period_segments) return;
-  scheduler_.set_pattern(next);
+  if (steps(scheduler_.pattern())) {
+    scheduler_.set_pattern(next);
+  } else {
+    scheduler_.restart(next);
+  }
   // feet already in the air start their new swing from where they are
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
@@ -331,7 +335,11 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
     // patterns change only where a cycle starts, so no foot is switched to stance mid-air; a
     // sequence runs to its end first
     const bool sequence_running = scheduler_.playing() && !scheduler_.sequence_finished();
-    if (scheduler_.cycle_phase() < 1e-9 && !sequence_running) change_pattern_if_due(state);
+    // a stand (all feet down) leaves for a stepping gait at once, at the new cycle's start:
+    // waiting for the stand's own cycle would let a push carry the body up to 0.3 s unstepped
+    const bool leaving_stand =
+        !bridging_ && !steps(scheduler_.pattern()) && gait_change_pending_ && steps(pending_gait_);
+    if ((scheduler_.cycle_phase() < 1e-9 || leaving_stand) && !sequence_running) change_pattern_if_due(state);
     post_mpc(state);
   }
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();

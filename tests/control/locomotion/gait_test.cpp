@@ -92,5 +92,18 @@ TEST(Gait, SwitchingPatternKeepsTheCyclePhase) {
   EXPECT_NEAR(scheduler.cycle_phase(), 0.25, 1e-9);
 }
 
+TEST(Gait, RestartingFromAStandBeginsTheNewGaitAtItsCycleStartWhereverTheStandWas) {
+  GaitScheduler scheduler(0.03);
+  scheduler.set_pattern(*gait_pattern(kStandGaitId));
+  scheduler.advance(0.21);  // 7 of the stand's 10 segments
+  scheduler.restart(*gait_pattern(3));
+  EXPECT_NEAR(scheduler.cycle_phase(), 0.0, 1e-12);
+  // the trot's first swing pair (FL, RR) lifts now, for its whole swing
+  const LegPhase fl = scheduler.leg_phase(1);
+  EXPECT_FALSE(fl.stance);
+  EXPECT_NEAR(fl.swing_phase, 0.0, 1e-12);
+  EXPECT_TRUE(scheduler.leg_phase(0).stance);
+}
+
 }  // namespace
 }  // namespace cerebellum
