@@ -1,5 +1,6 @@
 #include "safety/body_watch.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/leg_kinematics.hpp"
@@ -33,6 +34,18 @@ int foot_position_error_bits(const RobotState& state, const FootWorkspace& works
     if (p.z() < workspace.lowest_m || p.z() > workspace.highest_m) bits |= 1 << (3 * leg + 2);
   }
   return bits;
+}
+
+Vec3 clamp_into_foot_workspace(std::size_t leg, const Vec3& foot_body, const FootWorkspace& workspace,
+                               double margin_m) {
+  Vec3 p = foot_body - hip_position(leg);
+  const double forward = std::max(workspace.forward_m - margin_m, 0.0);
+  const double lateral = std::max(workspace.lateral_m - margin_m, 0.0);
+  p.x() = std::clamp(p.x(), -forward, forward);
+  p.y() = std::clamp(p.y(), -lateral, lateral);
+  p.z() = std::clamp(p.z(), workspace.lowest_m + margin_m,
+                     std::max(workspace.highest_m - margin_m, workspace.lowest_m + margin_m));
+  return p + hip_position(leg);
 }
 
 SafetyReport check_body(const RobotState& state, bool check_feet, const BodyWatchLimits& limits) {

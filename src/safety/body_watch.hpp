@@ -3,6 +3,7 @@
 // watched and what happens then is the state machine's business.
 #pragma once
 
+#include "core/leg_kinematics.hpp"
 #include "core/robot_state.hpp"
 #include "safety/safety_report.hpp"
 
@@ -30,6 +31,10 @@ struct FootWorkspace {
 // footpos_error bits: bit 3 * leg + axis (0 forward, 1 lateral, 2 vertical) for a foot outside
 // its workspace, measured from its abad joint in the body frame
 int foot_position_error_bits(const RobotState& state, const FootWorkspace& workspace = {});
+
+// a foot target (body frame) moved into the workspace shrunk by margin_m on every side: what a
+// controller that steps asks of a swing foot, so that the watch above does not fire on its own steps
+Vec3 clamp_into_foot_workspace(std::size_t leg, const Vec3& foot_body, const FootWorkspace& workspace, double margin_m);
 
 struct BodyWatchLimits {
   double orientation_limit_rad = kOrientationErrorRad;

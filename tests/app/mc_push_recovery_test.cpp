@@ -26,9 +26,9 @@ struct ShoveOutcome {
   double moved_m = 0.0;
 };
 
-// stands up, holds the stand gait 2 s, pushes the trunk sideways (world +y) with impulse_n_s
-// spread over push_s, and watches for settle_s
-ShoveOutcome shove(int gait_id, double impulse_n_s, double push_s, double settle_s) {
+// stands up, holds the stand gait 2 s, pushes the trunk sideways (world +y, or -y from the left)
+// with impulse_n_s spread over push_s, and watches for settle_s
+ShoveOutcome shove(int gait_id, double impulse_n_s, double push_s, double settle_s, double direction_y = 1.0) {
   McConfig config = default_config();
   config.startup = Startup::Off;
   Mc mc = make_simulated_mc(config);
@@ -37,7 +37,7 @@ ShoveOutcome shove(int gait_id, double impulse_n_s, double push_s, double settle
   const HighLevelCommand stand = high_level_command(ModeId::Locomotion, gait_id);
   client.run(stand, 2.0);
   const double y0 = mc.simulation().ground_truth().position[1];
-  mc.simulation().request_force_pulse({{0.0, impulse_n_s / push_s, 0.0}, push_s});
+  mc.simulation().request_force_pulse({{0.0, direction_y * impulse_n_s / push_s, 0.0}, push_s});
   ShoveOutcome outcome;
   client.run(stand, push_s + settle_s, [&](const CycleRecord&) {
     const GroundTruth truth = mc.simulation().ground_truth();
@@ -49,7 +49,7 @@ ShoveOutcome shove(int gait_id, double impulse_n_s, double push_s, double settle
   outcome.final_speed_m_s = std::hypot(truth.velocity_world[0], truth.velocity_world[1]);
   outcome.all_feet_down_at_the_end =
       truth.foot_contact[0] && truth.foot_contact[1] && truth.foot_contact[2] && truth.foot_contact[3];
-  outcome.moved_m = truth.position[1] - y0;
+  outcome.moved_m = direction_y * (truth.position[1] - y0);
   return outcome;
 }
 
@@ -64,6 +64,16 @@ TEST(McPushRecovery, TheStandWithPushRecoveryStepsUnderAShoveThatTopplesPlantedF
   EXPECT_TRUE(outcome.all_feet_down_at_the_end);
   // it stands where it came to rest, along the push, not back where it was pushed from
   EXPECT_GT(outcome.moved_m, 0.1);
+}
+
+TEST(McPushRecovery, ItsSwingFeetStayInsideTheFootWorkspaceSoAHarderShoveIsNotEndedByTheFootWatch) {
+  // 15 N s toward the right over 0.5 s: the catching footholds reach far out under a rolled trunk;
+  // unclamped, a swing foot crossed the interface's workspace and the machine damped (mode 7)
+  const ShoveOutcome outcome = shove(kStandGaitId, 15.0, 0.5, 3.0, -1.0);
+  EXPECT_LT(outcome.largest_tilt_rad, 0.6);
+  EXPECT_EQ(outcome.final_mode, 11);
+  EXPECT_LT(outcome.final_speed_m_s, 0.05);
+  EXPECT_TRUE(outcome.all_feet_down_at_the_end);
 }
 
 TEST(McPushRecovery, TheStandWithoutPushRecoveryKeepsEveryFootDownUnderAShoveItCanLeanAgainst) {

@@ -55,6 +55,35 @@ TEST(FootWorkspace, DefaultsAreTheReferenceFormulasWithItsLiterals) {
   EXPECT_DOUBLE_EQ(w.highest_m, -0.294 / 6.0);
 }
 
+TEST(FootWorkspace, AClampedFootTargetPassesTheWatchWithItsMarginAndOneInsideIsLeftAlone) {
+  const FootWorkspace w;
+  const double margin_m = 0.02;
+  const RobotState inside = standing_feet();
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const Vec3 foot = inside.foot_position_body[leg];
+    EXPECT_TRUE(clamp_into_foot_workspace(leg, foot, w, margin_m).isApprox(foot, 1e-12)) << leg;
+  }
+  // far out on every axis, both ways: the clamped target is inside the workspace shrunk by the margin
+  FootWorkspace shrunk = w;
+  shrunk.forward_m -= margin_m;
+  shrunk.lateral_m -= margin_m;
+  shrunk.lowest_m += margin_m;
+  shrunk.highest_m -= margin_m;
+  for (const Vec3& offset : {Vec3(0.5, 0.4, 0.3), Vec3(-0.5, -0.4, -0.6), Vec3(0.3, 0.0, 0.1), Vec3(0.0, -0.5, 0.0)}) {
+    RobotState state = standing_feet();
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+      state.foot_position_body[leg] =
+          clamp_into_foot_workspace(leg, state.foot_position_body[leg] + offset, w, margin_m);
+    }
+    EXPECT_EQ(foot_position_error_bits(state, shrunk), 0) << offset.transpose();
+    // and it lies on the shrunk workspace's edge, not deeper inside
+    EXPECT_NE(foot_position_error_bits(state, FootWorkspace{w.forward_m - 0.021, w.lateral_m - 0.021,
+                                                            w.lowest_m + 0.021, w.highest_m - 0.021}),
+              0)
+        << offset.transpose();
+  }
+}
+
 TEST(BodyCheck, ReportsTheOrientationAlwaysAndTheFeetOnlyWhenAsked) {
   RobotState state = standing_feet();
   state.rpy = {0.0, -1.4, 0.0};

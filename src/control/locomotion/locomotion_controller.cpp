@@ -8,6 +8,7 @@
 #include "control/locomotion/swing_trajectory.hpp"
 #include "core/leg_kinematics.hpp"
 #include "core/robot_model.hpp"
+#include "safety/body_watch.hpp"
 
 namespace cerebellum {
 namespace {
@@ -233,7 +234,11 @@ void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& ph
   // in flight the legs follow their targets in the attitude of the takeoff: tracking world targets
   // from a rolling body would swing the legs against the roll and spin the body further
   const Eigen::Matrix3d world_to_body = swing_frame_.transpose();
-  const Eigen::Vector3d p_body = world_to_body * (point.position - state.position_world);
+  // inside the interface's foot workspace with a margin: a foothold chasing a push, seen from a
+  // pitched or rolled trunk, otherwise crosses its edge and the footpos watch damps a robot that
+  // was recovering (most falls of the 0.5 s push sweep)
+  const Eigen::Vector3d p_body = clamp_into_foot_workspace(leg, world_to_body * (point.position - state.position_world),
+                                                           FootWorkspace{}, config_.workspace_margin_m);
   Eigen::Vector3d v_body = world_to_body * (point.velocity - state.velocity_world);
   if (!in_flight_) v_body -= state.omega_body.cross(p_body);
   const LegIkResult ik = inverse_kinematics_in_body(leg, p_body);

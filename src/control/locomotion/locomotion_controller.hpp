@@ -54,6 +54,8 @@ struct LocomotionConfig {
   double pigeon_toe_half_width_m = 0.11;  // value bit1 = 0: energy-saving narrower stance
   Eigen::Vector3d com_offset_body{0.013, 0.0, 0.0};
   int failed_solves_to_give_up = 3;
+  // swing feet are kept this far inside the interface's foot workspace (safety/body_watch)
+  double workspace_margin_m = 0.02;
 };
 
 // what a step of a user gait adds to the target (the gait's schedule comes from play())
