@@ -264,6 +264,16 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
     within_limits &= velocity_[axis] >= pending_gait_.velocity_min[axis] - config_.gait_switch_velocity_margin &&
                      velocity_[axis] <= pending_gait_.velocity_max[axis] + config_.gait_switch_velocity_margin;
   }
+  // and only once the body itself moves at a speed the new gait can carry: the ramped command
+  // reaches the new limits long before a fast body does (a flying trot sliding sideways at 0.7 m/s
+  // handed over to the slow trot, whose 0.2 m/s sideways could not hold it, fell in the soak)
+  if (steps(pending_gait_)) {
+    for (int axis = 0; axis < 2; ++axis) {
+      within_limits &=
+          state.velocity_body[axis] >= pending_gait_.velocity_min[axis] - config_.gait_switch_body_margin_m_s &&
+          state.velocity_body[axis] <= pending_gait_.velocity_max[axis] + config_.gait_switch_body_margin_m_s;
+    }
+  }
   const bool to_stand = !steps(pending_gait_);
   const bool moving = state.velocity_world.head<2>().norm() > 0.15;
   const bool ready = gait_change_pending_ && within_limits && !(to_stand && moving);

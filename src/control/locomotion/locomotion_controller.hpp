@@ -42,6 +42,8 @@ struct LocomotionConfig {
   double max_position_lag_m = 0.1;
   // a new gait starts once the ramped velocity is this close to its limits (m/s, rad/s)
   double gait_switch_velocity_margin = 0.05;
+  // ... and once the body's measured velocity is this close to them (m/s)
+  double gait_switch_body_margin_m_s = 0.15;
   // between two stepping gaits all feet stand this many segments (0: none): the old gait's last
   // stance leaves the body pitching or rolling (a bound up to 4 rad/s), and the new gait's first
   // swing pair would otherwise lift the legs that have to stop it; longer bridges fell more, the

@@ -151,6 +151,36 @@ TEST(Walking, ASlowGaitTakesOverOnlyOnceTheBodyIsWithinItsLimits) {
   EXPECT_NEAR(sim.backend.ground_truth().velocity_world[0], 0.6, 0.15);
 }
 
+TEST(Walking, ASlowGaitTakesOverOnlyOnceTheBodyItselfMovesWithinItsLimits) {
+  // trotting in place, the slow trot (0.2 m/s sideways at most) is asked for while a shove carries
+  // the body sideways: the command is within 27's limits at once, the body is not. The walking
+  // soak fell when a sliding flying trot handed over like this (seed 16)
+  WalkingSim sim;
+  sim.controller.set(walk_command(3, 0.0));
+  sim.run_until(kStart + 2.0);
+  sim.backend.request_force_pulse({{0.0, 45.0, 0.0}, 0.3});
+  sim.run_until(kStart + 2.3);
+  sim.controller.set(walk_command(27, 0.0));
+  const double limit_m_s = gait_pattern(27)->velocity_max[1] + LocomotionConfig{}.gait_switch_body_margin_m_s;
+  double fastest_before_m_s = 0.0;
+  double sideways_at_handover_m_s = -1.0;
+  bool upright = true;
+  sim.run_until(kStart + 5.0, [&](const CycleRecord& record) {
+    upright &= sim.upright();
+    const double sideways = std::abs(record.state.velocity_body.y());
+    if (sideways_at_handover_m_s >= 0.0) return;
+    if (sim.controller.walker().scheduler().pattern().id == 27) {
+      sideways_at_handover_m_s = sideways;
+    } else {
+      fastest_before_m_s = std::max(fastest_before_m_s, sideways);
+    }
+  });
+  EXPECT_GT(fastest_before_m_s, limit_m_s);  // the shove did carry it too fast for 27
+  EXPECT_GE(sideways_at_handover_m_s, 0.0);  // and 27 took over in the end
+  EXPECT_LE(sideways_at_handover_m_s, limit_m_s);
+  EXPECT_TRUE(upright);
+}
+
 TEST(Walking, VelocityBeyondTheGaitsLimitIsClampedAndNanIsRefused) {
   WalkingSim sim;
   sim.controller.set(walk_command(27, 0.3));
