@@ -7,7 +7,7 @@
 namespace cerebellum {
 
 PassiveTrotGait::PassiveTrotGait(WalkingGaits& walking, const PassiveFollowConfig& follow, double tick_s)
-    : walking_(walking), follow_(follow), tick_s_(tick_s) {}
+    : WalkingGaitWrapper(walking), follow_(follow), tick_s_(tick_s) {}
 
 LocomotionCommand PassiveTrotGait::walking_command(const RobotState& state) const {
   LocomotionCommand c = command_;

@@ -5,25 +5,19 @@
 #pragma once
 
 #include "control/locomotion/passive_follow.hpp"
-#include "modes/locomotion_gait.hpp"
-#include "modes/walking_gaits.hpp"
+#include "modes/walking_gait_wrapper.hpp"
 
 namespace cerebellum {
 
-class PassiveTrotGait final : public LocomotionGait {
+class PassiveTrotGait final : public WalkingGaitWrapper {
  public:
   PassiveTrotGait(WalkingGaits& walking, const PassiveFollowConfig& follow, double tick_s);
 
-  const char* check(const HighLevelCommand& command) const override { return walking_.check(command); }
   void start(const RobotState& state, const LocomotionCommand& command) override;
   void update(const LocomotionCommand& command) override { command_ = command; }
   void run(const RobotState& state, JointCommand& command) override;
-  ContactPlan contact_plan() const override { return walking_.contact_plan(); }
   void stop() override;
-  const void* walking_controller() const override { return &walking_; }
   void take_over(const RobotState& state, const LocomotionCommand& command) override;
-  int progress_percent() const override { return 100; }
-  bool damping_protection() const override { return walking_.failed(); }
 
   const PassiveFollow& follow() const { return follow_; }
 
@@ -31,7 +25,6 @@ class PassiveTrotGait final : public LocomotionGait {
   // the walking controller's command for this tick: the client's plus the pull's velocity
   LocomotionCommand walking_command(const RobotState& state) const;
 
-  WalkingGaits& walking_;
   PassiveFollow follow_;
   double tick_s_;
   LocomotionCommand command_;

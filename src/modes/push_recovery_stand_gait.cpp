@@ -4,7 +4,7 @@ namespace cerebellum {
 
 PushRecoveryStandGait::PushRecoveryStandGait(WalkingGaits& walking, const PushRecoveryStandConfig& config,
                                              double tick_s)
-    : walking_(walking), config_(config), recovery_(config.recovery), tick_s_(tick_s) {}
+    : WalkingGaitWrapper(walking), config_(config), recovery_(config.recovery), tick_s_(tick_s) {}
 
 LocomotionCommand PushRecoveryStandGait::walking_command() const {
   LocomotionCommand c = command_;

@@ -5,8 +5,7 @@
 #pragma once
 
 #include "control/locomotion/push_recovery.hpp"
-#include "modes/locomotion_gait.hpp"
-#include "modes/walking_gaits.hpp"
+#include "modes/walking_gait_wrapper.hpp"
 
 namespace cerebellum {
 
@@ -15,20 +14,15 @@ struct PushRecoveryStandConfig {
   int stepping_gait_id = 3;  // the trot that catches the body (gait table)
 };
 
-class PushRecoveryStandGait final : public LocomotionGait {
+class PushRecoveryStandGait final : public WalkingGaitWrapper {
  public:
   PushRecoveryStandGait(WalkingGaits& walking, const PushRecoveryStandConfig& config, double tick_s);
 
-  const char* check(const HighLevelCommand& command) const override { return walking_.check(command); }
   void start(const RobotState& state, const LocomotionCommand& command) override;
   void update(const LocomotionCommand& command) override { command_ = command; }
   void run(const RobotState& state, JointCommand& command) override;
-  ContactPlan contact_plan() const override { return walking_.contact_plan(); }
   void stop() override;
-  const void* walking_controller() const override { return &walking_; }
   void take_over(const RobotState& state, const LocomotionCommand& command) override;
-  int progress_percent() const override { return 100; }
-  bool damping_protection() const override { return walking_.failed(); }
 
   const PushRecovery& recovery() const { return recovery_; }
 
@@ -36,7 +30,6 @@ class PushRecoveryStandGait final : public LocomotionGait {
   // the walking controller's command: the stand, or the stepping trot in place while recovering
   LocomotionCommand walking_command() const;
 
-  WalkingGaits& walking_;
   PushRecoveryStandConfig config_;
   PushRecovery recovery_;
   double tick_s_;
