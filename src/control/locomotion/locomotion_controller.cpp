@@ -266,23 +266,24 @@ void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& ph
 
 void LocomotionController::change_pattern_if_due(const RobotState& state) {
   GaitPattern next = scheduler_.pattern();
+  // the first `axes` of a velocity within the new gait's limits widened by a margin
+  const auto within = [&](const Eigen::Vector3d& velocity, int axes, double margin) {
+    for (int axis = 0; axis < axes; ++axis) {
+      if (velocity[axis] < pending_gait_.velocity_min[axis] - margin ||
+          velocity[axis] > pending_gait_.velocity_max[axis] + margin) {
+        return false;
+      }
+    }
+    return true;
+  };
   // a gait takes over only at a speed it can step at: the current one slows the body down to the
-  // new gait's limits first (a stand gait cannot stop a moving body at all)
-  bool within_limits = true;
-  for (int axis = 0; axis < 3; ++axis) {
-    within_limits &= velocity_[axis] >= pending_gait_.velocity_min[axis] - config_.gait_switch_velocity_margin &&
-                     velocity_[axis] <= pending_gait_.velocity_max[axis] + config_.gait_switch_velocity_margin;
-  }
-  // and only once the body itself moves at a speed the new gait can carry: the ramped command
+  // new gait's limits first (a stand gait cannot stop a moving body at all), the ramped command and
+  // the body itself, which the new gait must carry: the ramped command
   // reaches the new limits long before a fast body does (a flying trot sliding sideways at 0.7 m/s
   // handed over to the slow trot, whose 0.2 m/s sideways could not hold it, fell in the soak)
-  if (steps(pending_gait_)) {
-    for (int axis = 0; axis < 2; ++axis) {
-      within_limits &=
-          state.velocity_body[axis] >= pending_gait_.velocity_min[axis] - config_.gait_switch_body_margin_m_s &&
-          state.velocity_body[axis] <= pending_gait_.velocity_max[axis] + config_.gait_switch_body_margin_m_s;
-    }
-  }
+  const bool within_limits =
+      within(velocity_, 3, config_.gait_switch_velocity_margin) &&
+      (!steps(pending_gait_) || within(state.velocity_body, 2, config_.gait_switch_body_margin_m_s));
   const bool to_stand = !steps(pending_gait_);
   const bool moving = state.velocity_world.head<2>().norm() > 0.15;
   const bool ready = gait_change_pending_ && within_limits && !(to_stand && moving);
