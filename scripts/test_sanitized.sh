@@ -3,7 +3,9 @@
 # the tests that do not run programs against the clock (labels demo, sockets, process, tools,
 # install, realtime left out: they are real-time end-to-end runs the Release stage covers, and a
 # sanitized MC falls behind the clock under load (a client's heartbeats then look late); seeds:
-# long seeded sweeps of the simulation, which the Release stage runs too), then a short run
+# long seeded sweeps of the simulation, and long: the longest lockstep runs (over half a minute of
+# simulation each, about a minute sanitized); the Release stage runs both, and the code paths they
+# take are covered here by the short tests), then a short run
 # of every libFuzzer program. Usage: scripts/test_sanitized.sh [fuzz seconds per target, default 5]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -12,7 +14,7 @@ fuzz_seconds=${1:-5}
 "$root/scripts/build_sanitized.sh"
 cd "$root/build-sanitize"
 export ASAN_OPTIONS=detect_leaks=1:abort_on_error=1 UBSAN_OPTIONS=print_stacktrace=1:halt_on_error=1
-ctest --output-on-failure --timeout 900 -j"$(nproc)" -LE "demo|sockets|process|tools|install|seeds|realtime" 2>&1 | tee ctest.log
+ctest --output-on-failure --timeout 900 -j"$(nproc)" -LE "demo|sockets|process|tools|install|seeds|long|realtime" 2>&1 | tee ctest.log
 status=${PIPESTATUS[0]}
 [[ $status -eq 0 ]] || exit "$status"
 FUZZ_SEED=1 "$root/scripts/fuzz.sh" "$fuzz_seconds"
