@@ -1,5 +1,6 @@
 #include "core/leg_kinematics.hpp"
 
+#include <Eigen/Geometry>
 #include <Eigen/LU>
 #include <algorithm>
 #include <cmath>
@@ -103,6 +104,18 @@ LegIkResult inverse_kinematics_in_hip(std::size_t leg, const Vec3& p) {
 
 LegIkResult inverse_kinematics_in_body(std::size_t leg, const Vec3& p) {
   return inverse_kinematics_in_hip(leg, p - hip_position(leg));
+}
+
+Vec3 shank_angular_velocity_body(const Vec3& omega_body, const Vec3& q, const Vec3& qd) {
+  return omega_body + Vec3(qd[0], 0.0, 0.0) + (qd[1] + qd[2]) * Vec3(0.0, std::cos(q[0]), std::sin(q[0]));
+}
+
+Vec3 trunk_velocity_over_rolling_foot(std::size_t leg, const Mat3& body_to_world, const Vec3& omega_body, const Vec3& q,
+                                      const Vec3& qd) {
+  const Vec3 radius_up(0.0, 0.0, robot::kFootRadius);
+  const Vec3 foot_centre_velocity_body = foot_jacobian(leg, q) * qd + omega_body.cross(foot_position_in_body(leg, q));
+  const Vec3 rolling_world = (body_to_world * shank_angular_velocity_body(omega_body, q, qd)).cross(radius_up);
+  return rolling_world - body_to_world * foot_centre_velocity_body;
 }
 
 }  // namespace cerebellum

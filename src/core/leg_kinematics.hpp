@@ -29,6 +29,16 @@ Mat3 foot_jacobian(std::size_t leg, const Vec3& q);
 // zero when the leg is singular (|det J| <= 1e-9, e.g. stretched straight: no unique force)
 Vec3 foot_force_from_torque(const Mat3& jacobian, const Vec3& tau);
 
+// angular velocity of a shank in the body frame: trunk rate, abad about x, hip + knee about the
+// y axis turned by the abad angle
+Vec3 shank_angular_velocity_body(const Vec3& omega_body, const Vec3& q, const Vec3& qd);
+
+// the trunk's velocity (world) while the foot rolls on the ground without slipping: its contact
+// point is still, its centre moves at omega_shank x (radius up), and the trunk moves opposite to
+// the foot centre as seen from it: v = omega_shank x r_up - R (J qd + omega x foot)
+Vec3 trunk_velocity_over_rolling_foot(std::size_t leg, const Mat3& body_to_world, const Vec3& omega_body, const Vec3& q,
+                                      const Vec3& qd);
+
 // joint angles that put the foot at p (hip frame), on the branch a standing robot uses: foot below
 // the abad axis in the leg plane, knee bent backwards (knee < 0)
 LegIkResult inverse_kinematics_in_hip(std::size_t leg, const Vec3& p);

@@ -14,12 +14,6 @@ constexpr double kMinGroundTrust = 0.5;
 
 double ramp(double value, double width) { return width > 0.0 ? std::clamp(value / width, 0.0, 1.0) : 1.0; }
 
-// angular velocity of a shank in the body frame: trunk rate, abad about x, hip + knee about the
-// y axis turned by the abad angle
-Vec3 shank_angular_velocity_body(const Vec3& omega_body, const Vec3& q, const Vec3& qd) {
-  return omega_body + Vec3(qd[0], 0.0, 0.0) + (qd[1] + qd[2]) * Vec3(0.0, std::cos(q[0]), std::sin(q[0]));
-}
-
 }  // namespace
 
 double force_contact_trust(double contact_probability, double time_in_contact_s, double ramp_s) {
@@ -122,12 +116,8 @@ LegObservations BodyStateEstimator::observe_legs(const RobotState& state) const 
     const Vec3& foot_body = state.foot_position_body[leg];
     // the filter's foot point is the bottom of the foot sphere: at z = 0 on the ground
     legs[leg].foot_relative_world = body_to_world * foot_body - foot_radius_up;
-    // a foot rolling without slip: its contact point is still, its centre moves at
-    // omega_shank x (radius up), and the centre's velocity is v + R (J qd + omega x r)
-    const Vec3 foot_centre_velocity_body = foot_jacobian(leg, q) * qd + state.omega_body.cross(foot_body);
-    const Vec3 shank_omega_world = body_to_world * shank_angular_velocity_body(state.omega_body, q, qd);
-    const Vec3 rolling_world = shank_omega_world.cross(foot_radius_up);
-    legs[leg].body_velocity_world = rolling_world - body_to_world * foot_centre_velocity_body;
+    // a foot rolling without slip
+    legs[leg].body_velocity_world = trunk_velocity_over_rolling_foot(leg, body_to_world, state.omega_body, q, qd);
     legs[leg].trust = trust_[leg];
   }
   return legs;

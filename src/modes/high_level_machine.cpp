@@ -225,6 +225,11 @@ bool HighLevelMachine::apply(const RobotState& state, const HighLevelCommand& co
     refuse(command, "transition not allowed from the current mode");
     return false;
   }
+  if (target != current_ && current_->must_finish() && target->id() != ModeId::PureDamper &&
+      target->id() != ModeId::Off) {
+    refuse(command, "the robot is not back on its feet yet (damping and off still stop it)");
+    return false;
+  }
   if (const StartRefusal refusal = target->start_refusal(state, command)) {
     refuse(command, refusal.reason, nullptr, refusal.status);
     return false;
@@ -254,7 +259,7 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
   }
   // a client that went silent: get-down protection; a jump in the air lands first (damping a
   // robot in flight would drop it), the protection follows once it stands
-  if (queue_.timed_out(state.time_s) && !current_->airborne()) {
+  if (queue_.timed_out(state.time_s) && !current_->must_finish()) {
     counters_.timeouts.fetch_add(1, std::memory_order_relaxed);
     queue_.clear();
     applied_generation_ = queue_.generation();

@@ -46,6 +46,10 @@ class Mode {
   virtual bool damping_protection() const { return false; }
   // true while the mode leaves the ground on purpose (a jump): feet without load are no lift
   virtual bool airborne() const { return false; }
+  // true while ending the mode now would drop the robot (a jump in the air, a two-leg stand off
+  // its front feet): the get-down protection of a silent client waits until it is back on its
+  // feet, and a client's command of another mode is refused meanwhile, except damping and off
+  virtual bool must_finish() const { return airborne(); }
 };
 
 }  // namespace cerebellum

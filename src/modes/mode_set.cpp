@@ -31,6 +31,14 @@ JumpControllerConfig jump_config(const ModeSetConfig& config) {
   return jump;
 }
 
+TwoLegStandConfig two_leg_stand_config(const ModeSetConfig& config) {
+  TwoLegStandConfig two_leg;
+  two_leg.model_path = config.robot_model_path;
+  two_leg.control_period_s = config.loop_period_s;
+  two_leg.damping_kd = config.damping_kd;
+  return two_leg;
+}
+
 }  // namespace
 
 ModeSet::ModeSet(const ModeSetConfig& config)
@@ -46,6 +54,9 @@ ModeSet::ModeSet(const ModeSetConfig& config)
       motion_(motions_, {&pose_control_, &qp_stand_, &locomotion_, &recovery_stand_}, user_gait_slot_, user_gait_),
       jump_(ModeId::Jump3d, jump_config(config)),
       force_jump_(ModeId::ForceJump, jump_config(config)) {
+  if (!config.robot_model_path.empty()) {
+    two_leg_stand_ = std::make_unique<TwoLegStandMode>(two_leg_stand_config(config));
+  }
   // the stepping gaits of the table run on the MPC locomotion controller; the stands on the
   // configured one
   LocomotionGait& stand =
@@ -78,6 +89,8 @@ void ModeSet::add_to(HighLevelMachine& machine) {
   machine.add_mode(motion_);
   machine.add_mode(jump_);
   machine.add_mode(force_jump_);
+  // the two-leg stand's balance is designed on the robot's model: without one it is not offered
+  if (two_leg_stand_) machine.add_mode(*two_leg_stand_);
 }
 
 }  // namespace cerebellum

@@ -2,6 +2,9 @@
 // place: the MC and the tests run the same set.
 #pragma once
 
+#include <memory>
+#include <string>
+
 #include "control/stand_up_controller.hpp"
 #include "modes/high_level_machine.hpp"
 #include "modes/jump_mode.hpp"
@@ -17,6 +20,7 @@
 #include "modes/push_recovery_stand_gait.hpp"
 #include "modes/qp_stand_mode.hpp"
 #include "modes/recovery_stand_mode.hpp"
+#include "modes/two_leg_stand_mode.hpp"
 #include "modes/user_gait.hpp"
 #include "modes/user_gait_runner.hpp"
 #include "modes/walking_gaits.hpp"
@@ -31,6 +35,8 @@ struct ModeSetConfig {
   // mode 62's named motions (motions/ reads them from files); every step is checked by the mode
   // it runs in when the set is built
   MotionLibrary motions;
+  // the robot's MuJoCo model, on which mode 64's balance is designed; empty: mode 64 is not offered
+  std::string robot_model_path;
 };
 
 class ModeSet {
@@ -52,6 +58,8 @@ class ModeSet {
   const UserGaitRunner& user_gait() const { return user_gait_; }
   const JumpMode& jump() const { return jump_; }
   const JumpMode& force_jump() const { return force_jump_; }
+  // nullptr without a robot model
+  const TwoLegStandMode* two_leg_stand() const { return two_leg_stand_.get(); }
   // where the high-level interface hands over a newly uploaded user gait (any thread)
   UserGaitSlot& user_gait_slot() { return user_gait_slot_; }
   // mode 11's gaits by id
@@ -76,6 +84,7 @@ class ModeSet {
   MotionMode motion_;
   JumpMode jump_;
   JumpMode force_jump_;
+  std::unique_ptr<TwoLegStandMode> two_leg_stand_;
 };
 
 }  // namespace cerebellum
