@@ -44,6 +44,8 @@ void TwoLegStandController::start(const RobotState& state, double duration_s) {
   start_s_ = phase_start_s_ = state.time_s;
   heading_yaw_rad_ = state.rpy.z();
   stand_q_ = phase_q_ = state.q;
+  // it stands again as high as it stood (within what the QP stand balances)
+  stand_height_m_ = std::min(state.height_m, config_.stand.max_height_m);
   // the front feet ahead of the hind feet, level axes: the crouch keeps them where they stand
   const Eigen::Matrix3d tilt = rotation_from_rpy(Eigen::Vector3d(state.rpy.x(), state.rpy.y(), 0.0));
   front_ahead_m_ = 0.5 * (tilt * (state.foot_position_body[0] + state.foot_position_body[1] -
@@ -65,6 +67,7 @@ void TwoLegStandController::begin_crouch(const RobotState& state) {
   feedback_.setZero();
   phase_ = TwoLegPhase::Crouch;
   phase_start_s_ = state.time_s;
+  last_elapsed_s_ = 0.0;
   phase_q_ = state.q;
   // s = 0's joints, the front feet put on their spots (level distance front_ahead_m_ from the
   // hind feet) from s = 0's trunk
@@ -90,19 +93,18 @@ double TwoLegStandController::total_s() const {
 double TwoLegStandController::progress() const {
   switch (phase_) {
     case TwoLegPhase::Idle: return 0.0;
-    case TwoLegPhase::Preparing: return 0.0;
     case TwoLegPhase::Standing:
     case TwoLegPhase::Failed: return 1.0;
     default: break;
   }
-  // the planned time since the crouch began, below 1 until it stands
-  double done = config_.design_wait_s;
-  const TwoLegPhase order[] = {TwoLegPhase::Crouch, TwoLegPhase::Rise,      TwoLegPhase::Hold,
-                               TwoLegPhase::Lower,  TwoLegPhase::FrontDown, TwoLegPhase::Restand};
+  // the planned time since the command, below 1 until it stands
+  double done = 0.0;
+  const TwoLegPhase order[] = {TwoLegPhase::Preparing, TwoLegPhase::Crouch,    TwoLegPhase::Rise,   TwoLegPhase::Hold,
+                               TwoLegPhase::Lower,     TwoLegPhase::FrontDown, TwoLegPhase::Restand};
   const double lengths[] = {
-      config_.crouch_s + config_.crouch_settle_s, config_.rise_s, hold_s_, config_.lower_s, config_.front_down_s,
-      config_.restand_s + config_.stand_s};
-  for (std::size_t i = 0; i < 6; ++i) {
+      config_.design_wait_s, config_.crouch_s + config_.crouch_settle_s, config_.rise_s, hold_s_, config_.lower_s,
+      config_.front_down_s,  config_.restand_s + config_.stand_s};
+  for (std::size_t i = 0; i < 7; ++i) {
     if (order[i] == phase_) {
       done += std::min(last_elapsed_s_, lengths[i]);
       break;
@@ -256,7 +258,7 @@ void TwoLegStandController::compute(const RobotState& state, JointCommand& comma
       if (!lifting_ && t >= 0.5 * config_.restand_s) {
         lifting_ = true;
         QpStandGoal stand;
-        stand.pose.position = {0.0, 0.0, robot::kStandHeightM};
+        stand.pose.position = {0.0, 0.0, stand_height_m_};
         stand_.set_goal(stand, PoseSpeed{1.0, 0.3, 0.5 * config_.restand_s}, 0.5 * config_.restand_s);
       }
       stand_.compute(state, command);

@@ -104,6 +104,7 @@ class TwoLegStandController {
       false;  // the restand's second goal (the stand's height) is set  // in the current phase, at the last tick
   double hold_s_ = 0.0;
   double heading_yaw_rad_ = 0.0;
+  double stand_height_m_ = 0.0;
   double front_ahead_m_ = 0.0;
   JointArray<double> stand_q_{};   // the joints it stood on
   JointArray<double> crouch_q_{};  // the crouch: s = 0's hind legs, the front feet on the ground
