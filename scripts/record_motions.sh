@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
-# A video of each named motion (mode 62) or jump (mode 16): for every id, the MC on the simulated
-# robot records build/motions/motion_<id>.mp4 (build/jumps/jump_<id>.mp4) while `cerebellum cmd`
+# A video of each named motion (mode 62) or jump (mode 16), or of the two-leg stand (64): for
+# every id, the MC on the simulated robot records build/motions/motion_<id>.mp4
+# (build/jumps/jump_<id>.mp4, build/two_legs/two_leg_0.mp4) while `cerebellum cmd`
 # stands the robot up and runs it, inside a private network namespace; the jump down a stair (9)
 # starts on a 10 cm landing (config/demo_stair.yaml). docs/motions.md and docs/jumps.md link the
 # files.
-#   scripts/record_motions.sh [--jumps] [ids...]
+#   scripts/record_motions.sh [--jumps | --two-leg] [ids...]
 #     (default: every shipped motion, or every jump; SIZE=WxH, default 640x360)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -18,13 +19,20 @@ kind=motion
 if [[ "${1:-}" == "--jumps" ]]; then
   kind=jump
   shift
+elif [[ "${1:-}" == "--two-leg" ]]; then
+  kind=two_leg
+  shift
 fi
 cerebellum=$root/build/src/app/cerebellum
 out=$root/build/${kind}s
 mkdir -p "$out"
 ids=("$@")
 if [[ ${#ids[@]} -eq 0 ]]; then
-  if [[ $kind == motion ]]; then ids=($(sed -n 's/^id = //p' "$root"/config/motions/*.toml)); else ids=(0 1 2 3 4 5 6 9); fi
+  case $kind in
+    motion) ids=($(sed -n 's/^id = //p' "$root"/config/motions/*.toml)) ;;
+    jump) ids=(0 1 2 3 4 5 6 9) ;;
+    two_leg) ids=(0) ;;
+  esac
 fi
 for id in "${ids[@]}"; do
   config=$root/config/demo.yaml
@@ -36,6 +44,8 @@ for id in "${ids[@]}"; do
   "$cerebellum" cmd stand --hold 0.5 > /dev/null
   if [[ $kind == motion ]]; then
     if "$cerebellum" cmd raw --mode 62 --gait "$id" --timeout 60 --hold 1.5; then result=done; else result=FAILED; fi
+  elif [[ $kind == two_leg ]]; then
+    if "$cerebellum" cmd raw --mode 64 --gait "$id" --timeout 20 --hold 1.5; then result=done; else result=FAILED; fi
   else
     # a jump starts from a still stand
     "$cerebellum" cmd raw --mode 11 --gait 1 --timeout 10 --hold 1.0 > /dev/null

@@ -140,6 +140,8 @@ int main(int argc, char** argv) {
     tour.reach("shake right hand (motion 62/2)", command(62, 2), 20);
     // a motion hands over to pose control or a stand (reference), not to locomotion directly
     tour.reach("pose: level after the motion (21)", command(21, 0), 10);
+    tour.reach("stand on the hind legs (64)", command(64, 0), 15);
+    tour.reach("pose: level after the two-leg stand (21)", command(21, 0), 10);
   }
 
   tour.reach("locomotion stand (11, gait 1)", command(11, 1), 10);
