@@ -9,28 +9,19 @@
 #include "app/lockstep_client.hpp"
 #include "app/simulated_robot.hpp"
 #include "control/locomotion/gait_table.hpp"
+#include "mc_fixture.hpp"
 
 namespace cerebellum {
 namespace {
 
-HighLevelCommand command(ModeId mode, int gait, double vx = 0.0, double yaw_rate = 0.0) {
-  return high_level_command(mode, gait, vx, 0.0, yaw_rate);
-}
-
-McConfig lying_start() {
-  McConfig config = default_config();
-  config.startup = Startup::Off;
-  return config;
-}
+using testing::command;
+using testing::lying_start;
 
 // with sensor noise of the seed: up, a slow trot, then `walk` for walk_s, then the stand (1) for
 // 3 s; the lowest the trunk's up axis came (cos of its tilt) while standing
 double lowest_up_z_stopping_into_the_stand(unsigned seed, const HighLevelCommand& walk, double walk_s,
                                            int* gait_after = nullptr) {
-  McConfig config = lying_start();
-  config.robot.noise.enabled = true;
-  config.robot.noise.seed = seed;
-  Mc mc = make_simulated_mc(config);
+  Mc mc = make_simulated_mc(lying_start(true, seed));
   LockstepClient client(mc);
   client.run(command(ModeId::RecoveryStand, 0), 3.0);
   client.run(command(ModeId::Locomotion, 3), 1.0);

@@ -12,15 +12,12 @@
 #include "app/simulated_robot.hpp"
 #include "backend/sim_fixture.hpp"
 #include "core/robot_model.hpp"
+#include "mc_fixture.hpp"
 
 namespace cerebellum {
 namespace {
 
-// the trunk's x axis above the horizontal (rad): 0 level, pi/2 nose straight up, past it beyond
-double elevation_rad(const GroundTruth& g) {
-  const double w = g.quat[0], x = g.quat[1], y = g.quat[2], z = g.quat[3];
-  return std::atan2(2.0 * (x * z - w * y), 1.0 - 2.0 * (y * y + z * z));
-}
+using testing::truth_elevation;
 
 // what one two-leg stand did, on the truth
 struct Outcome {
@@ -35,19 +32,12 @@ struct Outcome {
 };
 
 struct TwoLegRun {
-  explicit TwoLegRun(bool noise = false, unsigned seed = 0) : mc(make_simulated_mc(config(noise, seed))), client(mc) {
+  explicit TwoLegRun(bool noise = false, unsigned seed = 0)
+      : mc(make_simulated_mc(testing::lying_start(noise, seed))), client(mc) {
     client.run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
     // the pose hold the seed's example is in when it asks for the two-leg stand
     client.run(high_level_command(ModeId::PoseControl, 3), 1.0);
     stand_height_m = mc.simulation().ground_truth().position[2];
-  }
-
-  static McConfig config(bool noise, unsigned seed) {
-    McConfig c = default_config();
-    c.startup = Startup::Off;
-    c.robot.noise.enabled = noise;
-    c.robot.noise.seed = seed;
-    return c;
   }
 
   Outcome stand_on_two_legs(double seconds, int duration_ms = 0) {
@@ -62,7 +52,7 @@ struct TwoLegRun {
 
   void observe(Outcome& outcome, int& last_bar, double start_s) {
     const GroundTruth g = mc.simulation().ground_truth();
-    const double elevation = elevation_rad(g);
+    const double elevation = truth_elevation(g);
     outcome.highest_elevation_rad = std::max(outcome.highest_elevation_rad, elevation);
     if (elevation > 1.2) {
       outcome.upright_s += mc.loop().period_s();
@@ -127,11 +117,11 @@ TEST(McTwoLegStand, HoldsTheUprightPoseForTheRestOfALongerCommand) {
 TEST(McTwoLegStand, AnotherModeIsRefusedWhileUprightAndDampingStillStopsIt) {
   TwoLegRun run;
   run.stand_on_two_legs(5.5);  // up on the hind feet
-  ASSERT_GT(elevation_rad(run.mc.simulation().ground_truth()), 1.2);
+  ASSERT_GT(truth_elevation(run.mc.simulation().ground_truth()), 1.2);
   run.client.run(high_level_command(ModeId::PoseControl, 0), 0.5);
   EXPECT_EQ(run.mc.machine().status().mode, 64);
   EXPECT_EQ(run.mc.machine().status().switch_status, SwitchStatus::BanTransition);
-  EXPECT_GT(elevation_rad(run.mc.simulation().ground_truth()), 1.2);
+  EXPECT_GT(truth_elevation(run.mc.simulation().ground_truth()), 1.2);
   run.client.run(high_level_command(ModeId::PureDamper, 0), 0.1);
   EXPECT_EQ(run.mc.machine().status().mode, 7);
 }
@@ -139,14 +129,14 @@ TEST(McTwoLegStand, AnotherModeIsRefusedWhileUprightAndDampingStillStopsIt) {
 TEST(McTwoLegStand, AClientThatFallsSilentUprightIsDampedOnlyOnceTheRobotIsOnFourFeet) {
   TwoLegRun run;
   run.stand_on_two_legs(5.5);
-  ASSERT_GT(elevation_rad(run.mc.simulation().ground_truth()), 1.2);
+  ASSERT_GT(truth_elevation(run.mc.simulation().ground_truth()), 1.2);
   // no more messages: the heartbeat times out while the robot is up
   bool damped_upright = false;
   double lowest_m = 1.0;
   for (int tick = 0; tick < 3000; ++tick) {
     run.mc.loop().tick();
     const GroundTruth g = run.mc.simulation().ground_truth();
-    damped_upright |= run.mc.machine().status().mode == 7 && elevation_rad(g) > 0.5;
+    damped_upright |= run.mc.machine().status().mode == 7 && truth_elevation(g) > 0.5;
     lowest_m = std::min(lowest_m, g.position[2]);
   }
   EXPECT_FALSE(damped_upright);
@@ -156,7 +146,7 @@ TEST(McTwoLegStand, AClientThatFallsSilentUprightIsDampedOnlyOnceTheRobotIsOnFou
 TEST(McTwoLegStand, AShoveItCannotCatchUprightEndsInDampingAndTheRecoveryStandRightsIt) {
   TwoLegRun run;
   run.stand_on_two_legs(5.5);
-  ASSERT_GT(elevation_rad(run.mc.simulation().ground_truth()), 1.2);
+  ASSERT_GT(truth_elevation(run.mc.simulation().ground_truth()), 1.2);
   run.mc.simulation().request_force_pulse(ForcePulse{{-60.0, 0.0, 0.0}, 0.3});
   bool damped = false;
   run.client.run(high_level_command(ModeId::TwoLegStand, 0), 2.0, [&](const CycleRecord&) {

@@ -12,19 +12,13 @@
 #include "core/leg_kinematics.hpp"
 #include "core/robot_model.hpp"
 #include "app/simulated_robot.hpp"
+#include "mc_fixture.hpp"
 
 namespace cerebellum {
 namespace {
 
-HighLevelCommand command(ModeId mode, int gait, double vx = 0.0, double yaw_rate = 0.0) {
-  return high_level_command(mode, gait, vx, 0.0, yaw_rate);
-}
-
-McConfig lying_start() {
-  McConfig config = default_config();
-  config.startup = Startup::Off;
-  return config;
-}
+using testing::command;
+using testing::lying_start;
 
 TEST(McWalking, StandsThenTrotsForwardOnCommand) {
   Mc mc = make_simulated_mc(lying_start());

@@ -33,6 +33,12 @@ inline Eigen::Vector3d truth_rpy(const GroundTruth& truth) {
   return {std::atan2(r(2, 1), r(2, 2)), std::asin(-std::clamp(r(2, 0), -1.0, 1.0)), std::atan2(r(1, 0), r(0, 0))};
 }
 
+// the trunk's x axis above the horizontal (rad): 0 level, pi/2 nose straight up, more past it
+inline double truth_elevation(const GroundTruth& truth) {
+  const double w = truth.quat[0], x = truth.quat[1], y = truth.quat[2], z = truth.quat[3];
+  return std::atan2(2.0 * (x * z - w * y), 1.0 - 2.0 * (y * y + z * z));
+}
+
 // a backend, an estimator and a loop for one controller, stepped in lockstep
 struct LockstepSim {
   LockstepSim(const MujocoBackendConfig& config, MotionController& controller)

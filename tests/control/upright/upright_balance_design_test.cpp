@@ -12,30 +12,19 @@
 #include "control/upright/upright_balance_design.hpp"
 #include "control/upright/upright_state.hpp"
 #include "core/robot_model.hpp"
+#include "mujoco_model.hpp"
 
 namespace cerebellum {
 namespace {
 
-std::string model_path() { return std::string(CEREBELLUM_MODEL_DIR) + "/cyberdog2.xml"; }
+using Sim = testing::MujocoModel;
+using testing::robot_model_path;
 
 const std::vector<UprightSample>& family() {
-  static const std::vector<UprightSample> samples = design_upright_balance(model_path(), UprightDesignConfig{}, 0.002);
+  static const std::vector<UprightSample> samples =
+      design_upright_balance(robot_model_path(), UprightDesignConfig{}, 0.002);
   return samples;
 }
-
-struct Sim {
-  Sim() {
-    char error[1000] = "";
-    m = mj_loadXML(model_path().c_str(), nullptr, error, sizeof(error));
-    d = mj_makeData(m);
-  }
-  ~Sim() {
-    mj_deleteData(d);
-    mj_deleteModel(m);
-  }
-  mjModel* m = nullptr;
-  mjData* d = nullptr;
-};
 
 TEST(UprightBalanceDesign, EveryPoseStandsOnTheHindFeetAloneWithTheCentreOfMassOverThem) {
   const std::vector<UprightSample>& samples = family();

@@ -13,24 +13,12 @@
 #include "control/upright/upright_state.hpp"
 #include "core/leg_kinematics.hpp"
 #include "core/robot_model.hpp"
+#include "mujoco_model.hpp"
 
 namespace cerebellum {
 namespace {
 
-struct Model {
-  Model() {
-    char error[1000] = "";
-    const std::string path = std::string(CEREBELLUM_MODEL_DIR) + "/cyberdog2.xml";
-    m = mj_loadXML(path.c_str(), nullptr, error, sizeof(error));
-    d = mj_makeData(m);
-  }
-  ~Model() {
-    mj_deleteData(d);
-    mj_deleteModel(m);
-  }
-  mjModel* m = nullptr;
-  mjData* d = nullptr;
-};
+using Model = testing::MujocoModel;
 
 UprightPosition random_position(std::mt19937& rng) {
   std::uniform_real_distribution<double> u(-1.0, 1.0);
