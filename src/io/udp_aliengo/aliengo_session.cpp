@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 
+#include "control/locomotion/gait_table.hpp"
 #include "control/stance_frame.hpp"
 #include "modes/command_ranges.hpp"
 
@@ -30,11 +31,12 @@ bool legal_move(M from, M to) {
   return false;
 }
 
-// the MC's gait for HighCmd.gaitType: trot, running trot, stairs (slow, high feet)
-constexpr int kTrotGait = 26;
+// the MC's gait for HighCmd.gaitType: trot (the variable-frequency trot), running trot (the
+// flying trot), stairs (the slow trot, high feet); the stand of the gait table
+constexpr int kTrotGait = kVariableTrotGaitId;
 constexpr int kRunningTrotGait = 10;
 constexpr int kStairsGait = 27;
-constexpr int kStandGait = 1;
+constexpr int kStandGait = kStandGaitId;
 
 HighLevelCommand mc_command(ModeId mode, int gait = 0) {
   HighLevelCommand c;
