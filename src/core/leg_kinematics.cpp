@@ -84,22 +84,25 @@ LegIkResult inverse_kinematics_in_hip(std::size_t leg, const Vec3& p) {
   const double z_sag = -std::sqrt(z_sag_sq);
   const double abad = std::atan2(p.z(), p.y()) - std::atan2(z_sag, lateral);
 
-  // knee from the distance hip-to-foot in the sagittal plane (law of cosines)
-  const double reach_sq = p.x() * p.x() + z_sag * z_sag;
+  const SagittalIkResult sagittal = sagittal_inverse_kinematics(p.x(), z_sag);
+  // keep the abad angle in (-pi, pi]
+  return {Vec3(std::remainder(abad, 2.0 * robot::kPi), sagittal.hip, sagittal.knee), reachable && sagittal.reachable};
+}
+
+SagittalIkResult sagittal_inverse_kinematics(double x, double z) {
+  // knee from the distance hip-to-foot (law of cosines)
+  bool reachable = true;
   double cos_knee =
-      (reach_sq - kThighLength * kThighLength - kShankLength * kShankLength) / (2.0 * kThighLength * kShankLength);
+      (x * x + z * z - kThighLength * kThighLength - kShankLength * kShankLength) / (2.0 * kThighLength * kShankLength);
   if (cos_knee > 1.0 || cos_knee < -1.0) {
     reachable = false;
     cos_knee = std::clamp(cos_knee, -1.0, 1.0);
   }
   const double knee = -std::acos(cos_knee);
-
   // hip: direction of the foot from the hip minus the knee's contribution
-  const double foot_angle = std::atan2(-p.x(), -z_sag);
   const double hip =
-      foot_angle - std::atan2(kShankLength * std::sin(knee), kThighLength + kShankLength * std::cos(knee));
-  // keep the abad angle in (-pi, pi]
-  return {Vec3(std::remainder(abad, 2.0 * robot::kPi), hip, knee), reachable};
+      std::atan2(-x, -z) - std::atan2(kShankLength * std::sin(knee), kThighLength + kShankLength * std::cos(knee));
+  return {hip, knee, reachable};
 }
 
 LegIkResult inverse_kinematics_in_body(std::size_t leg, const Vec3& p) {

@@ -39,6 +39,15 @@ Vec3 shank_angular_velocity_body(const Vec3& omega_body, const Vec3& q, const Ve
 Vec3 trunk_velocity_over_rolling_foot(std::size_t leg, const Mat3& body_to_world, const Vec3& omega_body, const Vec3& q,
                                       const Vec3& qd);
 
+// hip and knee (knee bent backwards) that put the foot centre at (x, z) from the hip joint in the
+// leg's sagittal plane, body axes; reachable false when (x, z) is beyond the leg (then the nearest)
+struct SagittalIkResult {
+  double hip;
+  double knee;
+  bool reachable;
+};
+SagittalIkResult sagittal_inverse_kinematics(double x, double z);
+
 // joint angles that put the foot at p (hip frame), on the branch a standing robot uses: foot below
 // the abad axis in the leg plane, knee bent backwards (knee < 0)
 LegIkResult inverse_kinematics_in_hip(std::size_t leg, const Vec3& p);

@@ -41,7 +41,7 @@ bool TwoLegStandController::design_ready(double waited_s) {
 }
 
 void TwoLegStandController::start(const RobotState& state, double duration_s) {
-  start_s_ = phase_start_s_ = state.time_s;
+  phase_start_s_ = state.time_s;
   heading_yaw_rad_ = state.rpy.z();
   stand_q_ = phase_q_ = state.q;
   // it stands again as high as it stood (within what the QP stand balances)
@@ -114,8 +114,8 @@ double TwoLegStandController::progress() const {
   return std::min(0.99, done / total_s());
 }
 
-void TwoLegStandController::joint_ramp(const RobotState& state, const JointArray<double>& from,
-                                       const JointArray<double>& to, double share, JointCommand& command) const {
+void TwoLegStandController::joint_ramp(const JointArray<double>& from, const JointArray<double>& to, double share,
+                                       JointCommand& command) const {
   const double a = smoothstep(share);
   for (std::size_t j = 0; j < kNumJoints; ++j) {
     command.q_des[j] = from[j] + (to[j] - from[j]) * a;
@@ -124,26 +124,23 @@ void TwoLegStandController::joint_ramp(const RobotState& state, const JointArray
     command.kd[j] = config_.joint_kd;
     command.tau_ff[j] = 0.0;
   }
-  (void)state;
+}
+
+TwoLegStandController::Bracket TwoLegStandController::bracket(double s) const {
+  const double x = std::clamp(s, 0.0, 1.0) * static_cast<double>(samples_.size() - 1);
+  const std::size_t i = std::min(samples_.size() - 2, static_cast<std::size_t>(x));
+  return {samples_[i], samples_[i + 1], x - static_cast<double>(i)};
 }
 
 void TwoLegStandController::reference_at(double s, UprightPosition& position) const {
-  const double x = std::clamp(s, 0.0, 1.0) * static_cast<double>(samples_.size() - 1);
-  const std::size_t i = std::min(samples_.size() - 2, static_cast<std::size_t>(x));
-  const double w = x - static_cast<double>(i);
-  const UprightSample& a = samples_[i];
-  const UprightSample& b = samples_[i + 1];
+  const auto [a, b, w] = bracket(s);
   position = a.position + w * (b.position - a.position);
   const Eigen::Quaterniond q = upright_orientation(a.position).slerp(w, upright_orientation(b.position));
   position.segment<4>(3) << q.w(), q.x(), q.y(), q.z();
 }
 
 void TwoLegStandController::balance(const RobotState& state, double s, double s_rate_per_s, JointCommand& command) {
-  const double x = std::clamp(s, 0.0, 1.0) * static_cast<double>(samples_.size() - 1);
-  const std::size_t i = std::min(samples_.size() - 2, static_cast<std::size_t>(x));
-  const double w = x - static_cast<double>(i);
-  const UprightSample& a = samples_[i];
-  const UprightSample& b = samples_[i + 1];
+  const auto [a, b, w] = bracket(s);
   reference_at(s, reference_);
   // the reference's velocity: the family's tangent times the rate of progress
   const double ds = 1e-3;
@@ -205,14 +202,14 @@ void TwoLegStandController::compute(const RobotState& state, JointCommand& comma
         stand_.compute(state, command);
         return;
       }
-      joint_ramp(state, stand_q_, stand_q_, 1.0, command);
+      joint_ramp(stand_q_, stand_q_, 1.0, command);
       return;
     case TwoLegPhase::Crouch:
       if (t >= config_.crouch_s + config_.crouch_settle_s) {
         next(TwoLegPhase::Rise);
         break;
       }
-      joint_ramp(state, phase_q_, crouch_q_, t / config_.crouch_s, command);
+      joint_ramp(phase_q_, crouch_q_, t / config_.crouch_s, command);
       return;
     case TwoLegPhase::Rise:
       if (t >= config_.rise_s) {
@@ -248,7 +245,7 @@ void TwoLegStandController::compute(const RobotState& state, JointCommand& comma
         lifting_ = false;
         break;
       }
-      joint_ramp(state, phase_q_, crouch_q_, t / config_.front_down_s, command);
+      joint_ramp(phase_q_, crouch_q_, t / config_.front_down_s, command);
       return;
     case TwoLegPhase::Restand:
       if (t >= config_.restand_s + config_.stand_s) {
@@ -268,11 +265,11 @@ void TwoLegStandController::compute(const RobotState& state, JointCommand& comma
   }
   // phases that changed this tick run their first tick now
   switch (phase_) {
-    case TwoLegPhase::Crouch: joint_ramp(state, phase_q_, crouch_q_, 0.0, command); return;
+    case TwoLegPhase::Crouch: joint_ramp(phase_q_, crouch_q_, 0.0, command); return;
     case TwoLegPhase::Rise: balance(state, 0.0, 0.0, command); return;
     case TwoLegPhase::Hold: balance(state, 1.0, 0.0, command); return;
     case TwoLegPhase::Lower: balance(state, 1.0, 0.0, command); return;
-    case TwoLegPhase::FrontDown: joint_ramp(state, phase_q_, crouch_q_, 0.0, command); return;
+    case TwoLegPhase::FrontDown: joint_ramp(phase_q_, crouch_q_, 0.0, command); return;
     case TwoLegPhase::Restand: stand_.compute(state, command); return;
     case TwoLegPhase::Standing: stand_.compute(state, command); return;
     default: command = damping_command(config_.damping_kd, state.q); return;

@@ -83,9 +83,16 @@ class TwoLegStandController {
   // the design, once this much robot time has passed since the command (waits for it then)
   bool design_ready(double waited_s);
   void begin_crouch(const RobotState& state);
-  void joint_ramp(const RobotState& state, const JointArray<double>& from, const JointArray<double>& to, double share,
+  void joint_ramp(const JointArray<double>& from, const JointArray<double>& to, double share,
                   JointCommand& command) const;
-  // the equilibrium at progress s in 0..1: interpolated position, torque, gain
+  // the two family members around progress s in 0..1, and the share of the way to the second
+  struct Bracket {
+    const UprightSample& a;
+    const UprightSample& b;
+    double w;
+  };
+  Bracket bracket(double s) const;
+  // the reference pose at progress s: interpolated position, the orientation by slerp
   void reference_at(double s, UprightPosition& position) const;
   void balance(const RobotState& state, double s, double s_rate_per_s, JointCommand& command);
   double rise_share(double t) const;
@@ -97,7 +104,6 @@ class TwoLegStandController {
   std::string design_error_;
   QpStand stand_;
   TwoLegPhase phase_ = TwoLegPhase::Idle;
-  double start_s_ = 0.0;
   double phase_start_s_ = 0.0;
   double last_elapsed_s_ = 0.0;
   bool lifting_ =

@@ -10,6 +10,7 @@
 #include <stdexcept>
 
 #include "control/upright/upright_state.hpp"
+#include "core/leg_kinematics.hpp"
 #include "core/robot_model.hpp"
 
 namespace cerebellum {
@@ -25,18 +26,13 @@ struct DataDeleter {
   void operator()(mjData* d) const { mj_deleteData(d); }
 };
 
-constexpr int kFreeJointPositions = 7;
 constexpr int kFreeJointVelocities = 6;
 constexpr int kJointCount = static_cast<int>(kNumJoints);
 
-// hip and knee (SDK convention, abad 0) that put the foot centre at (x, z) from the hip joint in
-// the leg's sagittal plane, body axes; the knee bent backwards as the robot stands
+// hip and knee (abad 0) that put the foot centre at (x, z) from the hip joint, body axes
 std::array<double, 2> sagittal_leg_ik(double x, double z) {
-  const double l1 = robot::kThighLength, l2 = robot::kShankLength;
-  const double cos_knee = std::clamp((x * x + z * z - l1 * l1 - l2 * l2) / (2.0 * l1 * l2), -1.0, 1.0);
-  const double knee = -std::acos(cos_knee);
-  const double hip = std::atan2(-x, -z) - std::atan2(l2 * std::sin(knee), l1 + l2 * std::cos(knee));
-  return {hip, knee};
+  const SagittalIkResult ik = sagittal_inverse_kinematics(x, z);
+  return {ik.hip, ik.knee};
 }
 
 // the trunk pitched nose up by `elevation` (MuJoCo quaternion w x y z)
@@ -64,8 +60,8 @@ class Designer {
     }
   }
 
-  UprightSample sample(double elevation_rad, double hip_height_m, std::array<double, 2> front_hip_knee,
-                       const UprightDesignConfig& config) {
+  // the pose and the torques that hold it (no gain yet)
+  UprightSample equilibrium(double elevation_rad, double hip_height_m, std::array<double, 2> front_hip_knee) {
     UprightPosition q = UprightPosition::Zero();
     const Eigen::Quaterniond orientation = elevated(elevation_rad);
     q.segment<4>(3) << orientation.w(), orientation.x(), orientation.y(), orientation.z();
@@ -137,16 +133,22 @@ class Designer {
     q[1] -= mid.y();
     sample.position = q;
     sample.hind_feet_mid_m = Eigen::Vector3d(0.0, 0.0, mid.z());
+    return sample;
+  }
+
+  UprightSample sample(double elevation_rad, double hip_height_m, std::array<double, 2> front_hip_knee,
+                       const UprightDesignConfig& config) {
+    UprightSample sample = equilibrium(elevation_rad, hip_height_m, front_hip_knee);
     sample.gain = gain(sample, config);
     return sample;
   }
 
   // front hip and knee that put the front feet at (ahead_m, height_m) from the hind feet midpoint
   std::array<double, 2> front_reach(double elevation_rad, double hip_height_m, std::array<double, 2> guess,
-                                    double ahead_m, double height_m, const UprightDesignConfig& config) {
+                                    double ahead_m, double height_m) {
     std::array<double, 2> front = guess;
     for (int iteration = 0; iteration < 50; ++iteration) {
-      const UprightPosition q = balanced_pose(elevation_rad, hip_height_m, front, config);
+      const UprightPosition q = equilibrium(elevation_rad, hip_height_m, front).position;
       load(q);
       mj_kinematics(model_.get(), data_.get());
       const Eigen::Vector3d hind_mid = 0.5 * (site(2) + site(3));
@@ -163,15 +165,6 @@ class Designer {
   }
 
  private:
-  UprightPosition balanced_pose(double elevation_rad, double hip_height_m, std::array<double, 2> front,
-                                const UprightDesignConfig& config) {
-    // the equilibrium without its gain: cheap enough to iterate on
-    skip_gain_ = true;
-    const UprightSample s = sample(elevation_rad, hip_height_m, front, config);
-    skip_gain_ = false;
-    return s.position;
-  }
-
   void load(const UprightPosition& q) {
     std::copy(q.data(), q.data() + kUprightPositionSize, data_->qpos);
     mju_zero(data_->qvel, model_->nv);
@@ -189,7 +182,6 @@ class Designer {
   }
 
   UprightGain gain(const UprightSample& sample, const UprightDesignConfig& config) {
-    if (skip_gain_) return UprightGain::Zero();
     load(sample.position);
     for (std::size_t j = 0; j < kNumJoints; ++j) data_->ctrl[j] = sample.torque_nm[j];
     mj_forward(model_.get(), data_.get());
@@ -239,7 +231,6 @@ class Designer {
   std::unique_ptr<mjModel, ModelDeleter> model_;
   std::unique_ptr<mjData, DataDeleter> data_;
   std::array<int, kNumLegs> foot_site_{};
-  bool skip_gain_ = false;
 };
 
 }  // namespace
@@ -251,7 +242,7 @@ std::vector<UprightSample> design_upright_balance(const std::string& model_path,
   // s = 0: the front feet just above their stand spots, ahead of the hind feet
   const std::array<double, 2> crouch_front =
       designer.front_reach(config.start_elevation_rad, config.start_hip_height_m, {0.0, -1.2},
-                           config.front_foot_ahead_m, config.front_lift_m, config);
+                           config.front_foot_ahead_m, config.front_lift_m);
   const std::array<double, 2> folded{config.folded_front_hip_rad, config.folded_front_knee_rad};
   std::vector<UprightSample> samples;
   samples.reserve(static_cast<std::size_t>(config.samples));
