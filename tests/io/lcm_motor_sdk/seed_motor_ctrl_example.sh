@@ -58,8 +58,16 @@ fail=0
 [[ $sim_status -eq 0 ]] || { echo "WRONG: cerebellum sim exited with $sim_status"; fail=1; }
 [[ $example_status -eq 0 ]] || { echo "WRONG: the example exited with $example_status after SIGINT"; fail=1; }
 grep -q "^err_flag " "$work/example.log" || { echo "WRONG: the example never printed its data"; fail=1; }
-if ! grep -q "motor sdk: motor mode yes, err_flag 0x00" "$work/sim.log"; then
-  echo "WRONG: the MC did not end in motor mode with err_flag 0"; fail=1
+# bit 1 (lost, > 500 ms) must be clear at the end: the example's commands are executed. Bit 0 is
+# the late-frame warning (> 10 ms since the last frame): the example and the MC are two real-time
+# processes, and on a loaded machine one late wake-up of the example near the end sets it, so it is
+# not judged here (the lost bit and the communication-loss count are).
+final_flag=$(sed -n 's/^motor sdk: motor mode yes, err_flag 0x\([0-9a-f]*\);.*/\1/p' "$work/sim.log" | tail -1)
+if [[ -z "$final_flag" ]] || (( (16#$final_flag & 0x02) != 0 )); then
+  echo "WRONG: the MC did not end in motor mode with err_flag bit 1 clear (found '${final_flag}')"; fail=1
+fi
+if ! grep -q " 0 communication losses;" "$work/sim.log"; then
+  echo "WRONG: the MC saw the example's commands lost"; fail=1
 fi
 echo "--- ground truth"
 head -1 "$work/truth.log"
