@@ -11,7 +11,8 @@ flags="-O1 -gline-tables-only -fsanitize=address,undefined,fuzzer-no-link -fno-s
 CC=clang CXX=clang++ cmake -S "$root" -B "$root/build-sanitize" -DCMAKE_BUILD_TYPE=Sanitize \
   -DCMAKE_C_FLAGS="$flags" -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DCMAKE_SHARED_LINKER_FLAGS="-fsanitize=address,undefined" \
-  -DCEREBELLUM_FUZZ=ON -DCEREBELLUM_SANITIZED=ON -DCEREBELLUM_BUILD_BENCH=OFF > "$root/build-sanitize.configure.log" ||
+  -DCEREBELLUM_FUZZ=ON -DCEREBELLUM_SANITIZED=ON -DCEREBELLUM_BUILD_BENCH=OFF \
+  -DCEREBELLUM_TEST_LABELS_LEFT_OUT="${CEREBELLUM_TEST_LABELS_LEFT_OUT:-}" > "$root/build-sanitize.configure.log" ||
   { cat "$root/build-sanitize.configure.log"; exit 1; }
 if [[ $# -gt 0 ]]; then
   cmake --build "$root/build-sanitize" -j"$(nproc)" --target "$@"
