@@ -137,12 +137,11 @@ TEST(McJumps, TurningJumpsTurnNinetyDegreesWithinTenAndLandInPlace) {
   }
 }
 
-TEST(McJumps, TheUpJumpRaisesTheTrunkTheDocumentedTwentyCentimetresAndLandsInPlace) {
-  // asked 30 cm; the push ends about a tenth below its planned speed (docs/jumps.md)
+TEST(McJumps, TheUpJumpRaisesTheTrunkThirtyCentimetresWithinFifteenPercentAndLandsInPlace) {
   JumpRun run;
   const JumpOutcome jump = run.jump(jump_command(6));
   expect_landed_and_standing(jump, 16, 6);
-  EXPECT_GT(jump.rise_m, 0.2);
+  EXPECT_GT(jump.rise_m, 0.3 * 0.85);
   EXPECT_LT(jump.displacement_m.norm(), 0.1);
 }
 

@@ -238,7 +238,8 @@ bool JumpController::push_done(const RobotState& state, double t) const {
   frame_.estimate(state, kAllLegs, position, velocity);
   const Eigen::Vector3d& planned = plan_.takeoff_velocity_m_s;
   const bool fast_enough = velocity.dot(planned) >= config_.takeoff_speed_fraction * planned.squaredNorm();
-  const bool legs_extended = position.z() >= plan_.takeoff_height_m + config_.push_extra_height_m;
+  // toward the legs' full extension whatever height the plan reaches its speed at (a jump for height)
+  const bool legs_extended = position.z() >= config_.limits.takeoff_height_m + config_.push_extra_height_m;
   return fast_enough || legs_extended || t >= config_.push_overrun_fraction * plan_.push_duration_s;
 }
 

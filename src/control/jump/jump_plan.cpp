@@ -141,9 +141,8 @@ void finish_plan(JumpPlan& plan, const Eigen::Vector3d& com_velocity, double dro
   plan.planned_displacement_m = planned_displacement(plan);
 }
 
-}  // namespace
-
-JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
+// the plan with the push from limits.crouch_height_m to limits.takeoff_height_m
+JumpPlan plan_jump_between(const JumpTarget& target, const JumpLimits& limits) {
   JumpPlan plan;
   const double stroke_z = limits.takeoff_height_m - limits.crouch_height_m;
   const double drop_m = limits.takeoff_height_m - (target.landing_ground_m + limits.touchdown_height_m);
@@ -219,6 +218,16 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
   plan.yaw_rate_rad_s = target.yaw_rad / (0.5 * plan.push_duration_s + plan.flight_duration_s);
   plan.planned_yaw_rad = target.yaw_rad;
   return plan;
+}
+
+}  // namespace
+
+JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits) {
+  if (target.apex_rise_m <= 0.0) return plan_jump_between(target, limits);
+  JumpLimits high = limits;
+  high.crouch_height_m = limits.high_jump_crouch_height_m;
+  high.takeoff_height_m = limits.high_jump_takeoff_height_m;
+  return plan_jump_between(target, high);
 }
 
 JumpPlan plan_force_jump(const Eigen::Vector3d& acceleration, double yaw_acceleration, const JumpLimits& limits) {

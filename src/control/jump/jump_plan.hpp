@@ -23,7 +23,8 @@ namespace cerebellum {
 struct JumpTarget {
   Eigen::Vector2d displacement_m = Eigen::Vector2d::Zero();  // where the stand ends: forward, left
   double yaw_rad = 0.0;                                      // turn, counter-clockwise positive
-  double apex_rise_m = 0.0;  // trunk apex above the stand height (0: the lowest hop that clears)
+  double apex_rise_m =
+      0.0;  // trunk apex above the stand height (0: the lowest hop that clears; > 0: a jump for height)
   // ground height at the landing relative to the take-off (negative: a step down)
   double landing_ground_m = 0.0;
 };
@@ -32,6 +33,12 @@ struct JumpLimits {
   double stand_height_m = robot::kStandHeightM;
   double crouch_height_m = 0.13;
   double takeoff_height_m = 0.27;
+  // a jump for height asks the legs for more speed than they have near full extension (the
+  // motors' torque falls with speed, robot::kFullTorqueSpeedRadS .. kNoLoadSpeedRadS): its push is
+  // planned from a deeper crouch to reach the take-off speed lower, where the knees still have
+  // lever, and goes on toward full extension while the trunk is slower (the jump controller)
+  double high_jump_crouch_height_m = 0.12;
+  double high_jump_takeoff_height_m = 0.22;
   double touchdown_height_m = 0.25;     // trunk above the landing ground when the feet touch
   double min_vertical_speed_m_s = 1.2;  // lowest hop: the legs swing to the landing pose in the air
   double max_takeoff_speed_m_s = 2.6;   // centre of mass; the legs' extension speed (motors' speed-torque curve)

@@ -44,7 +44,7 @@ TEST(JumpPlan, TheFlightLastsAsLongAsTheIntegratedBallisticPathAndTheDisplacemen
                                    JumpTarget{{0.2, 0.1}, 0.0, 0.0, -0.1}, JumpTarget{{0.0, 0.0}, 1.0, 0.1, 0.0}}) {
     const JumpPlan plan = plan_jump(target, limits);
     ASSERT_EQ(plan.shortfall, kJumpReachable);
-    const Flight flight = integrate_flight(plan.com_takeoff_velocity_m_s, limits.takeoff_height_m,
+    const Flight flight = integrate_flight(plan.com_takeoff_velocity_m_s, plan.takeoff_height_m,
                                            target.landing_ground_m + limits.touchdown_height_m);
     EXPECT_NEAR(plan.flight_duration_s, flight.duration_s, 1e-4);
     EXPECT_NEAR(plan.flight_travel_m.x(), flight.travel_m.x(), 1e-4);
@@ -60,8 +60,7 @@ TEST(JumpPlan, TheFlightLastsAsLongAsTheIntegratedBallisticPathAndTheDisplacemen
     EXPECT_NEAR(plan.yaw_rate_rad_s * (0.5 * plan.push_duration_s + flight.duration_s), target.yaw_rad, 1e-3);
     // the apex the flight reaches
     EXPECT_NEAR(plan.apex_height_m,
-                limits.takeoff_height_m + std::pow(plan.com_takeoff_velocity_m_s.z(), 2) / (2.0 * kGravityMPerS2),
-                1e-9);
+                plan.takeoff_height_m + std::pow(plan.com_takeoff_velocity_m_s.z(), 2) / (2.0 * kGravityMPerS2), 1e-9);
   }
 }
 
@@ -90,6 +89,21 @@ TEST(JumpPlan, AnUpJumpRisesToItsApexWhenTheLegsAllowIt) {
   EXPECT_EQ(slow.shortfall, kJumpSpeedLimited);
   EXPECT_NEAR(slow.com_takeoff_velocity_m_s.z(), 1.5, 1e-9);
   EXPECT_STREQ(jump_shortfall_text(slow.shortfall), "take-off speed");
+}
+
+TEST(JumpPlan, AJumpForHeightPushesFromTheDeeperCrouchToTheLowerTakeoffAndTheOthersFromTheStandardOnes) {
+  const JumpLimits limits;
+  const JumpPlan high = plan_jump(JumpTarget{{0.0, 0.0}, 0.0, 0.3, 0.0}, limits);
+  EXPECT_EQ(high.crouch_height_m, limits.high_jump_crouch_height_m);
+  EXPECT_EQ(high.takeoff_height_m, limits.high_jump_takeoff_height_m);
+  EXPECT_NEAR(high.push_stroke_m.z(), limits.high_jump_takeoff_height_m - limits.high_jump_crouch_height_m, 1e-9);
+  // the apex is still the asked one: the flight starts lower and faster
+  EXPECT_NEAR(high.apex_height_m, limits.stand_height_m + 0.3, 1e-9);
+  for (const JumpTarget& target : {JumpTarget{{0.6, 0.0}, 0.0, 0.0, 0.0}, JumpTarget{{0.0, 0.0}, 1.5, 0.0, 0.0}}) {
+    const JumpPlan plan = plan_jump(target, limits);
+    EXPECT_EQ(plan.crouch_height_m, limits.crouch_height_m);
+    EXPECT_EQ(plan.takeoff_height_m, limits.takeoff_height_m);
+  }
 }
 
 TEST(JumpPlan, ALongJumpFliesHigherBeforeItAsksMoreHorizontalSpeedThanTheLandingBrakes) {
