@@ -23,8 +23,8 @@ namespace cerebellum {
 struct JumpTarget {
   Eigen::Vector2d displacement_m = Eigen::Vector2d::Zero();  // where the stand ends: forward, left
   double yaw_rad = 0.0;                                      // turn, counter-clockwise positive
-  double apex_rise_m =
-      0.0;  // trunk apex above the stand height (0: the lowest hop that clears; > 0: a jump for height)
+  // trunk apex above the stand height (0: the lowest hop that clears; > 0: a jump for height)
+  double apex_rise_m = 0.0;
   // ground height at the landing relative to the take-off (negative: a step down)
   double landing_ground_m = 0.0;
 };
