@@ -4,7 +4,8 @@
 // trunk, 0.1 s unless --push_s says otherwise); control runs on the robot's own estimate, the simulator's truth only
 // scores. A run survives when the trunk never tilts past 34 degrees and, 3 s after the push, moves slower than 0.3 m/s;
 // falls are counted apart. Prints a markdown table (docs/benchmarks.md).
-//   push_sweep_bench [--impulses=5,10,15,20,25,30] [--phases=5] [--push_s=0.1]
+//   push_sweep_bench [--impulses=5,10,15,20,25,30] [--phases=5] [--push_s=0.1] [--gaits=3,1,31]
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <sstream>
@@ -68,11 +69,13 @@ int main(int argc, char** argv) {
   std::vector<double> impulses{5, 10, 15, 20, 25, 30};
   int phases = 5;
   double push_s = 0.1;
+  std::vector<double> gaits{3, kStandGaitId, kStandWithoutPushRecoveryGaitId};
   for (int i = 1; i < argc; ++i) {
     const std::string arg = argv[i];
     if (arg.rfind("--impulses=", 0) == 0) impulses = numbers(arg.substr(11));
     if (arg.rfind("--phases=", 0) == 0) phases = std::stoi(arg.substr(9));
     if (arg.rfind("--push_s=", 0) == 0) push_s = std::stod(arg.substr(9));
+    if (arg.rfind("--gaits=", 0) == 0) gaits = numbers(arg.substr(8));
   }
   const Behaviour behaviours[] = {{"trot in place (11/3)", 3},
                                   {"stand with push recovery (11/1)", kStandGaitId},
@@ -89,6 +92,7 @@ int main(int argc, char** argv) {
   for (std::size_t k = 0; k < impulses.size(); ++k) std::printf("---|");
   std::printf("\n");
   for (const Behaviour& behaviour : behaviours) {
+    if (std::find(gaits.begin(), gaits.end(), behaviour.gait_id) == gaits.end()) continue;
     for (const auto& direction : directions) {
       std::printf("| %s | %s |", behaviour.name, direction.name);
       for (double impulse : impulses) {
