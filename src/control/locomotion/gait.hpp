@@ -29,12 +29,6 @@ std::optional<GaitPattern> gait_pattern(int gait_id);
 // true for a hop (pronk): every leg lifts and lands together
 bool legs_swing_together(const GaitPattern& pattern);
 
-// true for a trot: the diagonal pairs (FR with RL, FL with RR) step together, half a cycle apart
-bool is_trot(const GaitPattern& pattern);
-
-// whether a leg of the pattern stands in this segment of its cycle
-bool pattern_in_stance(const GaitPattern& pattern, std::size_t leg, int segment);
-
 // the variable-frequency trot's pattern for a commanded speed (m/s)
 GaitPattern variable_trot_pattern(double speed_m_s);
 
@@ -61,8 +55,8 @@ class GaitScheduler {
 
   // switch pattern, keeping the cycle phase (fraction of the cycle) continuous; ends a sequence
   void set_pattern(const GaitPattern& pattern);
-  // switch pattern and begin its cycle at this segment (a stand's phase means nothing to a gait)
-  void restart(const GaitPattern& pattern, int first_segment = 0);
+  // switch pattern and begin its cycle from the start (a stand's phase means nothing to a gait)
+  void restart(const GaitPattern& pattern);
   const GaitPattern& pattern() const { return pattern_; }
   // play a sequence from its first segment; the pattern waits until set_pattern() is called again
   void play(std::shared_ptr<const ContactSequence> sequence);

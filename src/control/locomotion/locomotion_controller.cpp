@@ -14,20 +14,6 @@
 namespace cerebellum {
 namespace {
 
-// a trot leaving a stand while the body moves sideways (faster than this) begins with the diagonal
-// pair whose front leg is on the side the body moves toward (FL and RR to the left, FR and RL to the
-// right): a sideways shove is caught the same way from either side. Always beginning with FL and RR
-// caught a push to the left and fell under its mirror image (push sweep: 20 N s over 0.5 s, 5 of 5
-// moments against 0 of 5). Otherwise the cycle begins where the pattern begins
-constexpr double kSidewaysLeadSpeedMS = 0.1;
-
-int first_segment_from_stand(const GaitPattern& next, const RobotState& state) {
-  const double sideways = state.velocity_body.y();
-  if (!is_trot(next) || std::abs(sideways) < kSidewaysLeadSpeedMS) return 0;
-  const Leg leading = sideways < 0.0 ? Leg::FR : Leg::FL;
-  return pattern_in_stance(next, static_cast<std::size_t>(leading), 0) ? next.period_segments / 2 : 0;
-}
-
 double wrap_angle(double a) { return std::remainder(a, 2.0 * robot::kPi); }
 
 double approach(double current, double target, double max_step) {
@@ -334,7 +320,7 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
   if (steps(scheduler_.pattern())) {
     scheduler_.set_pattern(next);
   } else {
-    scheduler_.restart(next, first_segment_from_stand(next, state));
+    scheduler_.restart(next);
   }
   // feet already in the air start their new swing from where they are
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();

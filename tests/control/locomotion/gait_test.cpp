@@ -105,48 +105,5 @@ TEST(Gait, RestartingFromAStandBeginsTheNewGaitAtItsCycleStartWhereverTheStandWa
   EXPECT_TRUE(scheduler.leg_phase(0).stance);
 }
 
-TEST(Gait, RestartingHalfACycleInBeginsATrotWithTheOtherDiagonalPair) {
-  GaitScheduler scheduler(0.03);
-  const GaitPattern trot = *gait_pattern(3);
-  scheduler.restart(trot, trot.period_segments / 2);
-  EXPECT_NEAR(scheduler.cycle_phase(), 0.5, 1e-12);
-  // FR and RL lift first now, FL and RR stand
-  EXPECT_FALSE(scheduler.leg_phase(0).stance);
-  EXPECT_FALSE(scheduler.leg_phase(3).stance);
-  EXPECT_NEAR(scheduler.leg_phase(0).swing_phase, 0.0, 1e-12);
-  EXPECT_TRUE(scheduler.leg_phase(1).stance);
-  EXPECT_TRUE(scheduler.leg_phase(2).stance);
-}
-
-TEST(Gait, TheTrotsAreTheGaitsWhoseDiagonalPairsStepHalfACycleApart) {
-  // against the stance table: in a trot FR and RL always agree, FL and RR always agree, and FL
-  // does what FR did half a cycle before
-  for (const GaitSpec& gait : kGaitTable) {
-    const GaitPattern pattern = *gait_pattern(gait.id);
-    const int n = pattern.period_segments;
-    bool diagonal = steps(pattern) && n % 2 == 0;
-    for (int segment = 0; segment < n; ++segment) {
-      const bool fr = pattern_in_stance(pattern, 0, segment), fl = pattern_in_stance(pattern, 1, segment);
-      const bool rr = pattern_in_stance(pattern, 2, segment), rl = pattern_in_stance(pattern, 3, segment);
-      diagonal &= fr == rl && fl == rr && fl == pattern_in_stance(pattern, 0, (segment + n / 2) % n);
-    }
-    EXPECT_EQ(is_trot(pattern), diagonal) << gait.id;
-  }
-  EXPECT_TRUE(is_trot(*gait_pattern(3)));
-  EXPECT_FALSE(is_trot(*gait_pattern(kStandGaitId)));
-}
-
-TEST(Gait, APatternsStanceTableAgreesWithTheSchedulersOwn) {
-  GaitScheduler scheduler(0.03);
-  const GaitPattern walk = *gait_pattern(27);
-  scheduler.set_pattern(walk);
-  for (int segment = 0; segment < walk.period_segments; ++segment) {
-    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-      EXPECT_EQ(pattern_in_stance(walk, leg, segment), scheduler.leg_phase(leg).stance) << segment << " " << leg;
-    }
-    scheduler.advance(0.03);
-  }
-}
-
 }  // namespace
 }  // namespace cerebellum
