@@ -16,7 +16,7 @@
 namespace cerebellum {
 namespace {
 
-constexpr int kDefaultWalkGait = 27;
+constexpr int kDefaultWalkGait = kSlowTrotGaitId;
 constexpr double kWalkStepHeightM = 0.05;    // what `walk` sends when --step-height is not given
 constexpr double kMaxDurationS = 2147483.0;  // int32 milliseconds
 

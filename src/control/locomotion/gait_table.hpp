@@ -33,6 +33,10 @@ inline constexpr double kDefaultStepHeightM = 0.06;
 inline constexpr int kStandGaitId = 1;
 inline constexpr int kStandWithoutPushRecoveryGaitId = 31;
 inline constexpr int kVariableTrotGaitId = 26;
+// the flying trot (the AlienGo interface's running trot) and the slow trot (its stairs gait, and
+// the `cerebellum walk` default)
+inline constexpr int kFlyingTrotGaitId = 10;
+inline constexpr int kSlowTrotGaitId = 27;
 // the pronk: its flight is the longest of the table, the most a user gait may fly
 inline constexpr int kPronkGaitId = 2;
 // the passive trot ("walk the dog"): stands until pulled, then trots along with the pull
@@ -79,7 +83,7 @@ inline constexpr std::array<GaitSpec, 9> kGaitTable{{
      {0.65, 0.4, 0.80},
      kDefaultStepHeightM},
     {7, "bound", GaitKind::Walking, {12, 8}, {6, 6, 0, 0}, {-0.3, -0.3, -1.5}, {0.3, 0.3, 1.5}, kDefaultStepHeightM},
-    {10,
+    {kFlyingTrotGaitId,
      "flying trot",
      GaitKind::Walking,
      {10, 4},
@@ -95,7 +99,7 @@ inline constexpr std::array<GaitSpec, 9> kGaitTable{{
      {-1.2, -0.6, -2.5},
      {1.6, 0.6, 2.5},
      kDefaultStepHeightM},
-    {27,
+    {kSlowTrotGaitId,
      "slow trot",
      GaitKind::Walking,
      {20, 12},

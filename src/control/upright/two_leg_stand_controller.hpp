@@ -105,9 +105,8 @@ class TwoLegStandController {
   QpStand stand_;
   TwoLegPhase phase_ = TwoLegPhase::Idle;
   double phase_start_s_ = 0.0;
-  double last_elapsed_s_ = 0.0;
-  bool lifting_ =
-      false;  // the restand's second goal (the stand's height) is set  // in the current phase, at the last tick
+  double last_elapsed_s_ = 0.0;  // in the current phase, at the last tick
+  bool lifting_ = false;         // the restand's second goal (the stand's height) is set
   double hold_s_ = 0.0;
   double heading_yaw_rad_ = 0.0;
   double stand_height_m_ = 0.0;

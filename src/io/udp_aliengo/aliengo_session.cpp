@@ -34,8 +34,8 @@ bool legal_move(M from, M to) {
 // the MC's gait for HighCmd.gaitType: trot (the variable-frequency trot), running trot (the
 // flying trot), stairs (the slow trot, high feet); the stand of the gait table
 constexpr int kTrotGait = kVariableTrotGaitId;
-constexpr int kRunningTrotGait = 10;
-constexpr int kStairsGait = 27;
+constexpr int kRunningTrotGait = kFlyingTrotGaitId;
+constexpr int kStairsGait = kSlowTrotGaitId;
 constexpr int kStandGait = kStandGaitId;
 
 HighLevelCommand mc_command(ModeId mode, int gait = 0) {
