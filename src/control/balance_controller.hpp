@@ -10,6 +10,7 @@
 
 #include <Eigen/Core>
 
+#include "control/leg_gravity.hpp"
 #include "control/force_distribution.hpp"
 #include "control/orientation_trim.hpp"
 #include "control/stance_frame.hpp"
@@ -23,7 +24,7 @@ struct BalanceConfig {
   double mass_kg = robot::kTotalMassKg;
   Eigen::Vector3d inertia_diag{robot::kMpcInertiaDiag[0], robot::kMpcInertiaDiag[1], robot::kMpcInertiaDiag[2]};
   // centre of mass of the whole robot in the body frame (trunk COM weighted with the legs)
-  Eigen::Vector3d com_in_body{0.0065, 0.0, -0.005};
+  Eigen::Vector3d com_in_body = stand_com_in_body();
   // PD gains as accelerations: per m (1/s^2) and per m/s (1/s), per rad and per rad/s
   Eigen::Vector3d kp_position{60.0, 60.0, 200.0};
   Eigen::Vector3d kd_position{12.0, 12.0, 20.0};

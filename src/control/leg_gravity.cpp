@@ -73,6 +73,26 @@ std::array<LegPointMass, kLegPointMasses> leg_point_masses(std::size_t leg, cons
   return masses;
 }
 
+Eigen::Vector3d whole_body_com_in_body(const std::array<double, 3>& leg_q) {
+  const robot::LinkMass& trunk = robot::kBodyLink;
+  double mass = trunk.mass_kg;
+  Eigen::Vector3d moment = trunk.mass_kg * Eigen::Vector3d(trunk.com_m[0], trunk.com_m[1], trunk.com_m[2]);
+  const Eigen::Vector3d q(leg_q[0], leg_q[1], leg_q[2]);
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const Eigen::Vector3d hip = hip_position(leg);
+    const Eigen::Vector3d abad_rotor(hip.x() > 0.0 ? robot::kAbadRotorX : -robot::kAbadRotorX, hip.y(), hip.z());
+    mass += robot::kRotorMassKg;
+    moment += robot::kRotorMassKg * abad_rotor;
+    for (const LegPointMass& point : leg_point_masses(leg, q)) {
+      mass += point.mass_kg;
+      moment += point.mass_kg * point.position;
+    }
+  }
+  return moment / mass;
+}
+
+Eigen::Vector3d stand_com_in_body() { return whole_body_com_in_body(robot::kStandPose); }
+
 Eigen::Vector3d leg_gravity_torque(std::size_t leg, const Eigen::Vector3d& q, const Eigen::Vector3d& gravity_body) {
   const PlacedLeg placed = place_leg(leg, q);
   const Eigen::Vector3d axis_abad = Eigen::Vector3d::UnitX();

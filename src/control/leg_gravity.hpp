@@ -21,6 +21,12 @@ struct LegPointMass {
 };
 std::array<LegPointMass, kLegPointMasses> leg_point_masses(std::size_t leg, const Eigen::Vector3d& q);
 
+// the whole robot's centre of mass in the body frame (trunk, its abad rotors and the legs) with
+// every leg at these joint angles, from the same mass model
+Eigen::Vector3d whole_body_com_in_body(const std::array<double, 3>& leg_q);
+// ... in the default stand (robot::kStandPose): what the stand and walking controllers balance
+Eigen::Vector3d stand_com_in_body();
+
 // sum over the leg's links of mass times the Jacobian of the link's centre of mass (body frame):
 // the leg's linear momentum relative to the trunk is this times the joint velocities. Read from
 // the gravity torques (they are its transpose applied to g), so the two share one mass model.

@@ -87,6 +87,7 @@ inline constexpr LinkMass kAbadLink{0.354, {-0.00392, -0.015, -0.000306}, 0.0001
 inline constexpr LinkMass kThighLink{0.482, {0.00212, -0.0212, -0.0184}, 0.00101, 0.000983};
 inline constexpr LinkMass kShankLink{0.116, {-0.0006, 4.72e-5, -0.0893}, 0.000668, 0.000674};
 inline constexpr double kRotorMassKg = 0.0567;
+inline constexpr double kAbadRotorX = 0.0998;        // the abad rotors sit on the trunk: +-x, on the abad axis
 inline constexpr double kHipRotorOffsetM = 0.0758;   // along the abad link, from the abad joint
 inline constexpr double kKneeRotorOffsetM = 0.0342;  // along the thigh, from the hip joint
 

@@ -8,6 +8,7 @@
 // Contact bits and foot_pose apply in gaits 0, 2 and 5.
 #pragma once
 
+#include "control/leg_gravity.hpp"
 #include "control/force_distribution.hpp"
 #include "control/orientation_trim.hpp"
 #include "control/pose_ramp.hpp"
@@ -29,7 +30,7 @@ struct PoseControlConfig {
   double kp = 80.0;
   double kd = 2.0;
   double mass_kg = robot::kTotalMassKg;
-  Eigen::Vector3d com_in_body{0.0065, 0.0, -0.005};
+  Eigen::Vector3d com_in_body = stand_com_in_body();
   ForceDistributionConfig distribution;
   OrientationTrimConfig trim;
 };

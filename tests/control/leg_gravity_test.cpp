@@ -52,6 +52,42 @@ TEST(LegGravity, MatchesTheSimulatorsGravityForceInRandomPoses) {
   mj_deleteData(data);
 }
 
+TEST(LegGravity, TheWholeBodyCentreOfMassIsTheSimulatorsInStandAndRandomLegPoses) {
+  MujocoBackend backend(testing::sim_config());
+  const mjModel* model = backend.model();
+  mjData* data = mj_makeData(model);
+  static const char* const kJoints[kJointsPerLeg] = {"abad", "hip", "knee"};
+  static const char* const kLegs[kNumLegs] = {"FR", "FL", "RR", "RL"};
+  std::mt19937 rng(5);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  for (int trial = 0; trial < 6; ++trial) {
+    std::array<double, 3> q = robot::kStandPose;
+    if (trial > 0) {
+      for (std::size_t k = 0; k < kJointsPerLeg; ++k) {
+        const robot::JointRange range = robot::joint_range(k);
+        q[k] = range.lower + (range.upper - range.lower) * unit(rng);
+      }
+    }
+    // the trunk at the origin, level
+    mju_zero(data->qpos, model->nq);
+    data->qpos[3] = 1.0;
+    for (const char* leg : kLegs) {
+      for (std::size_t k = 0; k < kJointsPerLeg; ++k) {
+        const std::string name = std::string(leg) + "_" + kJoints[k];
+        data->qpos[model->jnt_qposadr[mj_name2id(model, mjOBJ_JOINT, name.c_str())]] = q[k];
+      }
+    }
+    mj_forward(model, data);
+    const int trunk = mj_name2id(model, mjOBJ_BODY, "trunk");
+    const Eigen::Vector3d simulator(data->subtree_com[3 * trunk], data->subtree_com[3 * trunk + 1],
+                                    data->subtree_com[3 * trunk + 2]);
+    EXPECT_LT((whole_body_com_in_body(q) - simulator).norm(), 2e-5)
+        << "trial " << trial << ": " << whole_body_com_in_body(q).transpose() << " vs " << simulator.transpose();
+  }
+  EXPECT_EQ(stand_com_in_body(), whole_body_com_in_body(robot::kStandPose));
+  mj_deleteData(data);
+}
+
 TEST(LegGravity, VanishesWithoutGravity) {
   EXPECT_TRUE(leg_gravity_torque(0, Eigen::Vector3d(0.1, 0.8, -1.2), Eigen::Vector3d::Zero()).isZero());
 }

@@ -8,6 +8,7 @@
 #include <memory>
 #include <optional>
 
+#include "control/leg_gravity.hpp"
 #include "control/locomotion/convex_mpc.hpp"
 #include "control/locomotion/foothold.hpp"
 #include "control/locomotion/gait.hpp"
@@ -53,8 +54,8 @@ struct LocomotionConfig {
   // most 3.9 m/s^2 with no margin for the gait's own forces; 2.5 still fell in the soak
   double max_centripetal_accel_m_s2 = 2.0;
   double vertical_leg_half_width_m = robot::kHipY + robot::kAbadLength;  // value bit1 = 1: feet under the hips
-  double pigeon_toe_half_width_m = 0.11;  // value bit1 = 0: energy-saving narrower stance
-  Eigen::Vector3d com_offset_body{0.013, 0.0, 0.0};
+  double pigeon_toe_half_width_m = 0.11;                  // value bit1 = 0: energy-saving narrower stance
+  Eigen::Vector3d com_offset_body = stand_com_in_body();  // the whole robot's, in the stand
   int failed_solves_to_give_up = 3;
   // swing feet are kept this far inside the interface's foot workspace (safety/body_watch)
   double workspace_margin_m = 0.02;
