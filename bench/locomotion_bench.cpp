@@ -224,6 +224,7 @@ Row soak_row(double minutes, unsigned seed) {
   std::uniform_real_distribution<double> hold(1.0, 3.0);
   int commands = 0, falls = 0, stops = 0, recovered = 0;
   const double end = run.mc.backend().time_s() + 60.0 * minutes;
+  bench::WalkCommand previous;  // the command before, for the log: most falls come at a change
   while (run.mc.backend().time_s() < end) {
     const bench::WalkCommand walk = bench::random_walk_command(rng, gaits);
     const int gait = walk.gait;
@@ -238,14 +239,17 @@ Row soak_row(double minutes, unsigned seed) {
                    });
     const HighLevelStatus& status = run.mc.machine().status();
     const bool walking = status.mode == static_cast<int>(ModeId::Locomotion) && status.gait_id == gait;
+    const bench::WalkCommand before = previous;
+    previous = walk;
     if (up && walking) continue;
     up ? ++stops : ++falls;
     const CycleRecord& last = run.mc.loop().last_cycle();
     const double hottest_c = *std::max_element(last.state.temperature_c.begin(), last.state.temperature_c.end());
     std::fprintf(stderr,
-                 "soak: %s at %.1f s after gait %d v (%.2f, %.2f, %.2f); mode %d switch %d, health causes 0x%02x, "
-                 "hottest motor %.1f C\n",
-                 up ? "stop" : "fall", run.mc.backend().time_s(), gait, v.x(), v.y(), v.z(), status.mode,
+                 "soak: %s at %.1f s after gait %d v (%.2f, %.2f, %.2f) following gait %d v (%.2f, %.2f, %.2f); "
+                 "mode %d switch %d, health causes 0x%02x, hottest motor %.1f C\n",
+                 up ? "stop" : "fall", run.mc.backend().time_s(), gait, v.x(), v.y(), v.z(), before.gait,
+                 before.velocity.x(), before.velocity.y(), before.velocity.z(), status.mode,
                  static_cast<int>(status.switch_status), static_cast<unsigned>(causes), hottest_c);
     run.client.run(high_level_command(ModeId::RecoveryStand, 0), 8.0);
     recovered += upright(run.mc.simulation().ground_truth()) && run.mc.machine().status().order_process_bar >= 95;

@@ -4,6 +4,7 @@
 // rest. Gait 31 (the walking controller's plain stand) keeps its feet planted and only leans.
 #pragma once
 
+#include "control/locomotion/gait_table.hpp"
 #include "control/locomotion/push_recovery.hpp"
 #include "modes/walking_gait_wrapper.hpp"
 
@@ -11,7 +12,10 @@ namespace cerebellum {
 
 struct PushRecoveryStandConfig {
   PushRecoveryConfig recovery;
-  int stepping_gait_id = 3;  // the trot that catches the body (gait table)
+  // the trot that catches the body (gait table): the flying trot's 0.3 s cycle and short stance
+  // step before the trunk has pitched or rolled a planted foot out of the interface's workspace
+  // (gait 3's 0.36 s cycle ended 20 N s shoves along the body in the footpos watch's damping)
+  int stepping_gait_id = kFlyingTrotGaitId;
 };
 
 class PushRecoveryStandGait final : public WalkingGaitWrapper {

@@ -17,6 +17,10 @@ LocomotionTarget locomotion_target_from(const LocomotionCommand& command) {
   target.step_height_front_m = command.step_height_m[0];
   target.step_height_rear_m = command.step_height_m[1];
   target.vertical_legs = (command.value & 0b10) != 0;
+  // the table's stands (1, 31) hold the trunk over their planted feet; gait 1 steps when a push
+  // is more than that (push_recovery_stand_gait)
+  const GaitSpec* spec = find_gait(command.gait_id);
+  target.stand_holds_position = spec != nullptr && !gait_steps(*spec);
   return target;
 }
 

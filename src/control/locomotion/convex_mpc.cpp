@@ -34,6 +34,15 @@ bool input_is_finite(const MpcInput& input) {
 
 }  // namespace
 
+bool stands_throughout(const std::array<std::array<bool, kNumLegs>, kMpcHorizon>& contact) {
+  for (const auto& step : contact) {
+    for (const bool down : step) {
+      if (!down) return false;
+    }
+  }
+  return true;
+}
+
 ConvexMpc::ConvexMpc(const ConvexMpcConfig& config, std::unique_ptr<qp::QpSolver> solver)
     : config_(config), solver_(std::move(solver)) {
   a_qp_.setZero();
@@ -136,6 +145,7 @@ void ConvexMpc::build(const MpcInput& input) {
   Eigen::Matrix<double, kSrbStates * kMpcHorizon, 1> weights;
   for (int k = 0; k < kMpcHorizon; ++k) {
     for (int s = 0; s < 12; ++s) weights[kSrbStates * k + s] = config_.state_weights[s];
+    if (input.hold_position) weights[kSrbStates * k + 3] = weights[kSrbStates * k + 4] = config_.stand_position_weight;
     weights[kSrbStates * k + 12] = 0.0;
   }
   Eigen::Matrix<double, kSrbStates * kMpcHorizon, 1> error;  // Aqp x0 - Xref

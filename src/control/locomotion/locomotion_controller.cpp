@@ -124,8 +124,20 @@ void LocomotionController::post_mpc(const RobotState& state) {
   const double yaw_offset = std::clamp(wrap_angle(yaw_des_ + user.yaw_offset_rad - yaw), -0.2, 0.2);
   const double pitch_ref = target_.pitch_rad + state.ground.pitch_along(yaw);
   const double roll_ref = user.roll_rad + state.ground.roll_along(yaw);
+  in.contact = scheduler_.horizon_contacts<kMpcHorizon>();
+  const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
+  // a stand that leans instead of stepping holds the centre of mass over the middle of its feet,
+  // not where the trunk was when the stand began, and holds it there firmly
+  Eigen::Vector2d start_xy = position_des_;
+  in.hold_position = target_.stand_holds_position && stands_throughout(in.contact);
+  if (in.hold_position) {
+    Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
+    for (const Eigen::Vector3d& foot : state.foot_position_body) centroid += 0.25 * foot;
+    // the robot's own centre (as the QP stand and the jumps place it), not the MPC's tuned offset
+    start_xy = state.position_world.head<2>() + (body_to_world * (centroid - stand_com_in_body())).head<2>();
+  }
   // the reference turns with the commanded yaw rate: velocity and position follow the arc
-  const Eigen::Vector3d start(position_des_.x(), position_des_.y(), state.position_world.z());
+  const Eigen::Vector3d start(start_xy.x(), start_xy.y(), state.position_world.z());
   Eigen::Vector3d position = start;
   for (int k = 0; k < kMpcHorizon; ++k) {
     const double yaw_k = yaw + yaw_offset + velocity_.z() * (k + 1) * dt;
@@ -137,7 +149,6 @@ void LocomotionController::post_mpc(const RobotState& state) {
     x << roll_ref, pitch_ref, yaw_k, position.x(), position.y(), ground_z + target_.height_m + height_correction_m_,
         0.0, 0.0, velocity_.z(), velocity_world.x(), velocity_world.y(), 0.0, -robot::kGravityMPerS2;
   }
-  const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
   const Eigen::Vector3d com_world = state.position_world + body_to_world * config_.com_offset_body;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     // a foot in the air pushes next from where it will land
@@ -146,7 +157,6 @@ void LocomotionController::post_mpc(const RobotState& state) {
         phase.stance ? Eigen::Vector3d(body_to_world * (state.foot_position_body[leg] - config_.com_offset_body))
                      : Eigen::Vector3d(foothold_world(leg, phase, state) - com_world);
   }
-  in.contact = scheduler_.horizon_contacts<kMpcHorizon>();
   in.friction = user.friction;
   worker_.post(in);
 }

@@ -141,6 +141,34 @@ TEST(ConvexMpc, AskingForForwardSpeedPushesForward) {
   EXPECT_GT(total_x, 1.0);
 }
 
+TEST(ConvexMpc, AStandThatHoldsItsPositionPullsADisplacedTrunkBackHarder) {
+  // the trunk 3 cm left of its reference: both pull it back, the holding stand (weight 40 on x, y
+  // instead of 2) with a larger sideways force
+  auto total_y = [](const MpcOutput& out) {
+    double y = 0.0;
+    for (const auto& f : out.forces) y += f.y();
+    return y;
+  };
+  MpcInput in = standing_input();
+  in.x0[4] = 0.03;
+  auto mpc = make_mpc();
+  const MpcOutput leaning = mpc->solve(in);
+  in.hold_position = true;
+  const MpcOutput holding = mpc->solve(in);
+  ASSERT_EQ(leaning.status, qp::QpStatus::Solved);
+  ASSERT_EQ(holding.status, qp::QpStatus::Solved);
+  EXPECT_LT(total_y(leaning), 0.0);
+  EXPECT_LT(total_y(holding), 3.0 * total_y(leaning));
+}
+
+TEST(ConvexMpc, StandsThroughoutOnlyWhenEveryFootIsDownAtEveryStep) {
+  EXPECT_TRUE(stands_throughout(standing_input().contact));
+  EXPECT_FALSE(stands_throughout(standing_input(0.0, true).contact));
+  MpcInput late_lift = standing_input();
+  late_lift.contact[kMpcHorizon - 1][2] = false;
+  EXPECT_FALSE(stands_throughout(late_lift.contact));
+}
+
 TEST(ConvexMpc, GoldfarbIdnaniAgreesWithAlglibOnTheRealProblem) {
   ConvexMpc gi(ConvexMpcConfig{}, std::make_unique<qp::GoldfarbIdnaniSolver>());
   ConvexMpc alglib(ConvexMpcConfig{}, std::make_unique<qp::AlglibQpSolver>());
