@@ -105,9 +105,8 @@ int main(int argc, char** argv) {
         int fell = 0;
         int stopped = 0;
         for (int phase = 0; phase < phases; ++phase) {
-          const Outcome outcome =
-              push_outcome(behaviour.gait_id, impulse, push_s, direction.direction,
-                           offset_s + trot_cycle_s * phase / phases);
+          const Outcome outcome = push_outcome(behaviour.gait_id, impulse, push_s, direction.direction,
+                                               offset_s + trot_cycle_s * phase / phases);
           survived += outcome == Outcome::Survived;
           fell += outcome == Outcome::Fell;
           stopped += outcome == Outcome::Stopped;
@@ -127,7 +126,8 @@ int main(int argc, char** argv) {
     }
   }
   std::printf(
-      "\nsurvived / runs per cell (%d moments of the %.2f s trot cycle from %.3f s), pushes of %.2f s; a run that did not fall but "
+      "\nsurvived / runs per cell (%d moments of the %.2f s trot cycle from %.3f s), pushes of %.2f s; a run that did "
+      "not fall but "
       "still moved faster than 0.3 m/s 3 s after the push, or ended in a protective stop (stopped: the joints damped, "
       "out of mode 11), is not counted as survived\n",
       phases, trot_cycle_s, offset_s, push_s);
