@@ -1,9 +1,11 @@
 // Push sweep: which shoves the robot survives, trotting in place (11/3) and in the two stands (11/1
 // with push recovery, 11/31 without), over impulses, four directions and five moments of the trot
 // cycle. The push is the `cerebellum push` disturbance (Simulation::request_force_pulse on the
-// trunk, 0.1 s unless --push_s says otherwise); control runs on the robot's own estimate, the simulator's truth only
-// scores. A run survives when the trunk never tilts past 34 degrees and, 3 s after the push, moves slower than 0.3 m/s;
-// falls are counted apart. Prints a markdown table (docs/benchmarks.md).
+// trunk, 0.1 s unless --push_s says otherwise); control runs on the robot's own estimate, the
+// simulator's truth only scores. A run survives when the trunk never tilts past 34 degrees, the
+// robot is still in mode 11 (not damped by a protective stop) and, 3 s after the push, moves
+// slower than 0.3 m/s; falls and stops are counted apart. Prints a markdown table
+// (docs/benchmarks.md).
 //   push_sweep_bench [--impulses=5,10,15,20,25,30] [--phases=5] [--push_s=0.1] [--gaits=3,1,31] [--offset_s=0]
 #include <algorithm>
 #include <cmath>

@@ -134,7 +134,7 @@ void LocomotionController::post_mpc(const RobotState& state) {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
     for (const Eigen::Vector3d& foot : state.foot_position_body) centroid += 0.25 * foot;
     // the robot's own centre (as the QP stand and the jumps place it), not the MPC's tuned offset
-    start_xy = state.position_world.head<2>() + (body_to_world * (centroid - stand_com_in_body())).head<2>();
+    start_xy = state.position_world.head<2>() + (body_to_world * (centroid - stand_com_body_)).head<2>();
   }
   // the reference turns with the commanded yaw rate: velocity and position follow the arc
   const Eigen::Vector3d start(start_xy.x(), start_xy.y(), state.position_world.z());

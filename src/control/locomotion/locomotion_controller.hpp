@@ -136,6 +136,8 @@ class LocomotionController {
                                       double yaw_ahead_s) const;
 
   LocomotionConfig config_;
+  // the robot's own centre of mass in the stand, where a holding stand puts it over the feet
+  Eigen::Vector3d stand_com_body_ = stand_com_in_body();
   ConvexMpc mpc_;
   MpcWorker worker_;
   GaitScheduler scheduler_;
