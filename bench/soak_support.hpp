@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Core>
+#include <algorithm>
 #include <cmath>
 #include <random>
 #include <string>
@@ -14,11 +15,18 @@
 
 namespace cerebellum::bench {
 
-// the trunk's up axis within 0.6 rad (34 deg) of vertical
-inline bool upright(const GroundTruth& g) {
+// the angle between the trunk's up axis and the vertical
+inline double tilt_rad(const GroundTruth& g) {
   const double up_z = 1 - 2 * (g.quat[1] * g.quat[1] + g.quat[2] * g.quat[2]);
-  return up_z > std::cos(0.6);
+  return std::acos(std::clamp(up_z, -1.0, 1.0));
 }
+
+// the trunk's up axis within 0.6 rad (34 deg) of vertical
+inline bool upright(const GroundTruth& g) { return tilt_rad(g) < 0.6; }
+
+// a walking command whose trunk tilted past this (20 deg; the bound pitches up to 0.3 rad when
+// it turns at full speed) and still walked on: a near fall
+inline constexpr double kNearFallTiltRad = 0.35;
 
 // the default robot lying at start; with sensor noise of the given seed, or without (seed < 0)
 inline McConfig soak_config(long noise_seed = -1) {

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace cerebellum {
 namespace {
@@ -58,6 +59,60 @@ bool steps(const GaitPattern& pattern) {
   return false;
 }
 
+namespace {
+
+bool pattern_stance(const GaitPattern& pattern, std::size_t leg, int segment) {
+  const int n = pattern.period_segments;
+  return ((segment - pattern.offsets[leg]) % n + n) % n < pattern.stance[leg];
+}
+
+bool all_stand(const GaitPattern& pattern, int segment) {
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    if (!pattern_stance(pattern, leg, segment)) return false;
+  }
+  return true;
+}
+
+// how far the centre lies inside the feet that stand alone first after `segment` (m): the smaller
+// lateral distance to the pair's left and right foot; unbounded when no front or rear pair stands
+// alone then (a trot's diagonal, a hop's flight)
+double first_pair_margin_m(const GaitPattern& pattern, int segment, const std::array<double, kNumLegs>& foot_y) {
+  constexpr auto fr = static_cast<std::size_t>(Leg::FR), fl = static_cast<std::size_t>(Leg::FL);
+  constexpr auto rr = static_cast<std::size_t>(Leg::RR), rl = static_cast<std::size_t>(Leg::RL);
+  const double unbounded = std::numeric_limits<double>::infinity();
+  for (int k = 0; k < pattern.period_segments; ++k) {
+    const int s = segment + k;
+    if (all_stand(pattern, s)) continue;
+    const bool front = pattern_stance(pattern, fr, s) && pattern_stance(pattern, fl, s);
+    const bool rear = pattern_stance(pattern, rr, s) && pattern_stance(pattern, rl, s);
+    const bool front_any = pattern_stance(pattern, fr, s) || pattern_stance(pattern, fl, s);
+    const bool rear_any = pattern_stance(pattern, rr, s) || pattern_stance(pattern, rl, s);
+    if (front && !rear_any) return std::min(foot_y[fl], -foot_y[fr]);
+    if (rear && !front_any) return std::min(foot_y[rl], -foot_y[rr]);
+    return unbounded;
+  }
+  return unbounded;
+}
+
+}  // namespace
+
+int entry_segment(const GaitPattern& pattern, const std::array<double, kNumLegs>& foot_y_from_com_m) {
+  // a better start must gain this much: from a stand (feet symmetric) the cycle begins at 0
+  constexpr double kPreferenceM = 0.01;
+  int best = 0;
+  double best_margin = first_pair_margin_m(pattern, 0, foot_y_from_com_m);
+  for (int s = 1; s < pattern.period_segments; ++s) {
+    // the first segment of a run in which every foot stands
+    if (!all_stand(pattern, s) || all_stand(pattern, s - 1)) continue;
+    const double margin = first_pair_margin_m(pattern, s, foot_y_from_com_m);
+    if (margin > best_margin + kPreferenceM) {
+      best = s;
+      best_margin = margin;
+    }
+  }
+  return best;
+}
+
 GaitPattern stand_bridge_pattern(int segments) {
   const int period = std::max(segments, 1);
   return make(kStandGaitId, {period, period}, {0, 0, 0, 0}, {0, 0, 0}, {0, 0, 0});
@@ -85,10 +140,10 @@ void GaitScheduler::set_pattern(const GaitPattern& pattern) {
   time_in_segment_s_ = (position - segment_) * segment_s_;
 }
 
-void GaitScheduler::restart(const GaitPattern& pattern) {
+void GaitScheduler::restart(const GaitPattern& pattern, int segment) {
   sequence_.reset();
   pattern_ = pattern;
-  segment_ = 0;
+  segment_ = std::clamp(segment, 0, pattern_.period_segments - 1);
   time_in_segment_s_ = 0.0;
 }
 

@@ -38,6 +38,14 @@ bool steps(const GaitPattern& pattern);
 // all feet on the ground for a few segments: the bridge from one stepping gait to another
 GaitPattern stand_bridge_pattern(int segments);
 
+// the segment at which a pattern's cycle begins, from a stand or a bridge, given each foot's
+// lateral position from the centre of mass (body y, m). A gait in which the front or the rear pair
+// stands alone (the bound) begins at the all-stance segment after which the pair that stands alone
+// first straddles the centre widest; the other pair swings first and lands under its hips. Feet a
+// trot leaves behind lie up to 10 cm inward (a sideways or turning walk carries the body over its
+// stance feet), and a bound whose first pair stood on one of them rolled over it. Otherwise 0.
+int entry_segment(const GaitPattern& pattern, const std::array<double, kNumLegs>& foot_y_from_com_m);
+
 // where each leg is in the cycle at one instant
 struct LegPhase {
   bool stance = true;
@@ -55,8 +63,8 @@ class GaitScheduler {
 
   // switch pattern, keeping the cycle phase (fraction of the cycle) continuous; ends a sequence
   void set_pattern(const GaitPattern& pattern);
-  // switch pattern and begin its cycle from the start (a stand's phase means nothing to a gait)
-  void restart(const GaitPattern& pattern);
+  // switch pattern and begin its cycle at `segment` (a stand's phase means nothing to a gait)
+  void restart(const GaitPattern& pattern, int segment = 0);
   const GaitPattern& pattern() const { return pattern_; }
   // play a sequence from its first segment; the pattern waits until set_pattern() is called again
   void play(std::shared_ptr<const ContactSequence> sequence);

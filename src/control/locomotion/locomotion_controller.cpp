@@ -330,7 +330,10 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
   if (steps(scheduler_.pattern())) {
     scheduler_.set_pattern(next);
   } else {
-    scheduler_.restart(next);
+    std::array<double, kNumLegs> foot_y{};
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg)
+      foot_y[leg] = state.foot_position_body[leg].y() - stand_com_body_.y();
+    scheduler_.restart(next, entry_segment(next, foot_y));
   }
   // feet already in the air start their new swing from where they are
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();

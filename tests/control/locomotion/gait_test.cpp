@@ -105,5 +105,46 @@ TEST(Gait, RestartingFromAStandBeginsTheNewGaitAtItsCycleStartWhereverTheStandWa
   EXPECT_TRUE(scheduler.leg_phase(0).stance);
 }
 
+// the feet that stand alone first after a cycle begins at `segment`, read off the scheduler's
+// horizon (independent of entry_segment's own walk through the pattern)
+std::array<bool, kNumLegs> first_lone_stance(const GaitPattern& pattern, int segment) {
+  GaitScheduler scheduler(0.03);
+  scheduler.restart(pattern, segment);
+  for (const auto& contact : scheduler.horizon_contacts<12>()) {
+    if (!(contact[0] && contact[1] && contact[2] && contact[3])) return contact;
+  }
+  return {true, true, true, true};
+}
+
+TEST(Gait, ABoundBeginsWithTheRearPairAloneWhenTheFeetStandUnderTheHips) {
+  const GaitPattern bound = *gait_pattern(7);
+  const int segment = entry_segment(bound, {-0.11, 0.11, -0.11, 0.11});
+  EXPECT_EQ(segment, 0);
+  const std::array<bool, kNumLegs> rear_alone{false, false, true, true};
+  EXPECT_EQ(first_lone_stance(bound, segment), rear_alone);
+}
+
+TEST(Gait, ABoundBeginsWithTheFrontPairAloneWhenARearFootStandsUnderTheBody) {
+  // a sideways trot left the rear right foot 1 cm from the centre line
+  const GaitPattern bound = *gait_pattern(7);
+  const int segment = entry_segment(bound, {-0.11, 0.13, -0.01, 0.12});
+  const std::array<bool, kNumLegs> front_alone{true, true, false, false};
+  EXPECT_EQ(first_lone_stance(bound, segment), front_alone);
+  // it begins where every foot stands, not in the middle of a swing
+  GaitScheduler scheduler(0.03);
+  scheduler.restart(bound, segment);
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) EXPECT_TRUE(scheduler.leg_phase(leg).stance) << leg;
+  // and a front foot under the body keeps the rear pair first
+  EXPECT_EQ(first_lone_stance(bound, entry_segment(bound, {-0.02, 0.12, -0.11, 0.11})),
+            (std::array<bool, kNumLegs>{false, false, true, true}));
+}
+
+TEST(Gait, GaitsWithoutALonePairBeginAtTheirCycleStartWhereverTheFeetAre) {
+  for (int id : {27, 3, 10, 4, 2}) {
+    EXPECT_EQ(entry_segment(*gait_pattern(id), {-0.01, 0.12, -0.11, 0.01}), 0) << id;
+  }
+  EXPECT_EQ(entry_segment(variable_trot_pattern(1.0), {0.0, 0.0, 0.0, 0.0}), 0);
+}
+
 }  // namespace
 }  // namespace cerebellum
