@@ -95,10 +95,20 @@ ContactSchedule LocomotionController::contact_schedule() const {
 }
 
 void LocomotionController::ramp_velocity() {
+  Eigen::Vector3d goal = target_.velocity;
+  // while a new gait waits for the running one's cycle to end, the running gait is driven within
+  // its own limits only: a bound turned at the variable trot's 2.5 rad/s through its last cycle
+  // handed the trot feet swept under the body (and fell)
+  const GaitPattern& running = scheduler_.pattern();
+  if (gait_change_pending_ && !bridging_ && !scheduler_.playing() && steps(running)) {
+    for (int axis = 0; axis < 3; ++axis) {
+      goal[axis] = std::clamp(goal[axis], running.velocity_min[axis], running.velocity_max[axis]);
+    }
+  }
   const double dv = config_.max_accel_m_s2 * config_.tick_s;
-  velocity_.x() = approach(velocity_.x(), target_.velocity.x(), dv);
-  velocity_.y() = approach(velocity_.y(), target_.velocity.y(), dv);
-  velocity_.z() = approach(velocity_.z(), target_.velocity.z(), config_.max_yaw_accel_rad_s2 * config_.tick_s);
+  velocity_.x() = approach(velocity_.x(), goal.x(), dv);
+  velocity_.y() = approach(velocity_.y(), goal.y(), dv);
+  velocity_.z() = approach(velocity_.z(), goal.z(), config_.max_yaw_accel_rad_s2 * config_.tick_s);
 }
 
 Eigen::Vector3d LocomotionController::hip_on_ground_world(std::size_t leg, const RobotState& state, double ahead_s,
