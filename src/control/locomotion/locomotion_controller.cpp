@@ -333,8 +333,13 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
   // about a third as far as a forward one, so lateral speed counts three times; turning counts as
   // the speed of a hip 0.2 m from the centre)
   if (next.adapts_frequency) {
-    const double stride_speed = std::hypot(velocity_.x(), 3.0 * velocity_.y()) + 0.2 * std::abs(velocity_.z());
-    next = variable_trot_pattern(stride_speed);
+    const auto stride_speed = [](const Eigen::Vector3d& v) {
+      return std::hypot(v.x(), 3.0 * v.y()) + 0.2 * std::abs(v.z());
+    };
+    // the cycle for the faster of the ramped and the commanded speed: the cycle changes only where
+    // one begins, and the slowest (0.72 s) kept while the ramp sped the body up to 1 m/s carried
+    // its stance feet 0.3 m
+    next = variable_trot_pattern(std::max(stride_speed(velocity_), stride_speed(target_.velocity)));
   }
   if (next.id == scheduler_.pattern().id && next.period_segments == scheduler_.pattern().period_segments) return;
   if (steps(scheduler_.pattern())) {

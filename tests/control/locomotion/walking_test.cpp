@@ -110,12 +110,13 @@ TEST(Walking, AllFeetStandOneSegmentBetweenTwoGaitsButNotBetweenTrotFrequencies)
   EXPECT_EQ(runs[1].second, 15);  // one 30 ms segment at 500 Hz
   EXPECT_EQ(runs[2].first, 10);
   EXPECT_TRUE(all_stance_in_bridge);
-  // the variable-frequency trot shortens its cycle as it speeds up, without a bridge
-  sim.controller.set(walk_command(26, 0.2));
+  // the variable-frequency trot lengthens its cycle step by step as it slows down, without a
+  // bridge (speeding up, it takes the cycle of the commanded speed at once)
+  sim.controller.set(walk_command(26, 1.2));
   sim.run_until(kStart + 6.0);
   runs.clear();
   std::vector<int> periods;
-  sim.controller.set(walk_command(26, 1.2));
+  sim.controller.set(walk_command(26, 0.2));
   sim.run_until(kStart + 8.0, [&](const CycleRecord& r) {
     record(r);
     const int period = sim.controller.walker().scheduler().pattern().period_segments;
@@ -261,6 +262,27 @@ TEST(Walking, TheRunningGaitIsDrivenWithinItsOwnLimitsUntilTheNextOneTakesOver) 
     EXPECT_TRUE(sim.upright()) << bound_s;
     EXPECT_LT(worst_tilt, 0.4) << bound_s;
     EXPECT_EQ(sim.controller.walker().scheduler().pattern().id, 26);
+  }
+}
+
+TEST(Walking, TheVariableTrotStartsWithTheCycleOfTheSpeedItIsAskedForAndNotTheSlowestOne) {
+  // asked for 1 m/s backward from a hop in place, it ran its slowest cycle (0.72 s) while the
+  // ramp sped the body up: its stance feet were carried 0.3 m and it fell over them
+  const GaitPattern fast = variable_trot_pattern(std::hypot(1.03, 3.0 * 0.27) + 0.2 * 0.15);
+  for (double pronk_s : {1.5, 1.7, 1.9, 2.1, 2.3}) {
+    WalkingSim sim;
+    sim.controller.set(walk_command(2, 0.02, 0.14, 0.49));
+    sim.run_until(kStart + pronk_s);
+    sim.controller.set(walk_command(26, -1.03, -0.27, -0.15));
+    double worst_tilt = 0.0;
+    sim.run_until(kStart + pronk_s + 3.0, [&](const CycleRecord&) {
+      const GaitPattern& running = sim.controller.walker().scheduler().pattern();
+      if (running.id == 26) EXPECT_EQ(running.period_segments, fast.period_segments) << pronk_s;
+      const GroundTruth g = sim.backend.ground_truth();
+      worst_tilt = std::max(worst_tilt, std::acos(1 - 2 * (g.quat[1] * g.quat[1] + g.quat[2] * g.quat[2])));
+    });
+    EXPECT_TRUE(sim.upright()) << pronk_s;
+    EXPECT_LT(worst_tilt, 0.4) << pronk_s;
   }
 }
 
