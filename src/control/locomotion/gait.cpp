@@ -61,6 +61,7 @@ bool steps(const GaitPattern& pattern) {
 
 namespace {
 
+// the leg stands in this segment of the pattern's cycle (any segment, counted on past the period)
 bool pattern_stance(const GaitPattern& pattern, std::size_t leg, int segment) {
   const int n = pattern.period_segments;
   return ((segment - pattern.offsets[leg]) % n + n) % n < pattern.stance[leg];
@@ -162,9 +163,7 @@ void GaitScheduler::advance(double dt_s) {
 
 bool GaitScheduler::in_stance(std::size_t leg, int segment) const {
   if (sequence_ != nullptr) return sequence_->in_stance(leg, segment);
-  const int n = pattern_.period_segments;
-  const int since_start = ((segment - pattern_.offsets[leg]) % n + n) % n;
-  return since_start < pattern_.stance[leg];
+  return pattern_stance(pattern_, leg, segment);
 }
 
 LegPhase GaitScheduler::leg_phase(std::size_t leg) const {
