@@ -346,8 +346,9 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
     scheduler_.set_pattern(next);
   } else {
     std::array<double, kNumLegs> foot_y{};
-    for (std::size_t leg = 0; leg < kNumLegs; ++leg)
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
       foot_y[leg] = state.foot_position_body[leg].y() - stand_com_body_.y();
+    }
     scheduler_.restart(next, entry_segment(next, foot_y));
   }
   // feet already in the air start their new swing from where they are

@@ -2,6 +2,8 @@
 // estimate (BodyStateEstimator fed by the loop with the gait's contact plan), in lockstep time.
 #pragma once
 
+#include <algorithm>
+#include <cmath>
 #include <memory>
 #include <string>
 
@@ -10,6 +12,7 @@
 #include "control/locomotion/locomotion_controller.hpp"
 #include "control/qp/goldfarb_idnani_solver.hpp"
 #include "control/stand_up_controller.hpp"
+#include "core/orientation.hpp"
 #include "estimation/body_state_estimator.hpp"
 
 namespace cerebellum::testing {
@@ -75,16 +78,20 @@ struct WalkingSim {
   void run_until(double t) {
     run_until(t, [](const CycleRecord&) {});
   }
-  double yaw_truth() const {
+  // the trunk's roll, pitch, yaw on the simulator's truth
+  Eigen::Vector3d rpy_truth() const {
     const GroundTruth g = backend.ground_truth();
-    return std::atan2(2 * (g.quat[0] * g.quat[3] + g.quat[1] * g.quat[2]),
-                      1 - 2 * (g.quat[2] * g.quat[2] + g.quat[3] * g.quat[3]));
+    return rpy_from_quaternion(Eigen::Quaterniond(g.quat[0], g.quat[1], g.quat[2], g.quat[3]));
+  }
+  double yaw_truth() const { return rpy_truth().z(); }
+  // the angle between the trunk's up axis and the vertical, on the simulator's truth
+  double tilt_truth() const {
+    const GroundTruth g = backend.ground_truth();
+    return std::acos(std::clamp(1 - 2 * (g.quat[1] * g.quat[1] + g.quat[2] * g.quat[2]), -1.0, 1.0));
   }
   bool upright() const {
-    const GroundTruth g = backend.ground_truth();
     // the body's z axis within ~30 deg of vertical and the trunk well above the ground
-    const double up_z = 1 - 2 * (g.quat[1] * g.quat[1] + g.quat[2] * g.quat[2]);
-    return up_z > std::cos(0.5) && g.position[2] > 0.17;
+    return tilt_truth() < 0.5 && backend.ground_truth().position[2] > 0.17;
   }
 
   MujocoBackend backend;

@@ -229,12 +229,8 @@ TEST(Walking, ABoundAfterASidewaysTurningTrotStartsOnThePairThatStraddlesTheBody
     sim.run_until(kStart + trot_s);
     sim.controller.set(walk_command(7, 0.02, -0.29, 1.02));
     double worst_roll = 0.0;
-    sim.run_until(kStart + trot_s + 3.0, [&](const CycleRecord&) {
-      const GroundTruth g = sim.backend.ground_truth();
-      const double roll = std::atan2(2 * (g.quat[0] * g.quat[1] + g.quat[2] * g.quat[3]),
-                                     1 - 2 * (g.quat[1] * g.quat[1] + g.quat[2] * g.quat[2]));
-      worst_roll = std::max(worst_roll, std::abs(roll));
-    });
+    sim.run_until(kStart + trot_s + 3.0,
+                  [&](const CycleRecord&) { worst_roll = std::max(worst_roll, std::abs(sim.rpy_truth().x())); });
     EXPECT_TRUE(sim.upright()) << trot_s;
     EXPECT_LT(worst_roll, 0.25) << trot_s;
     EXPECT_EQ(sim.controller.walker().scheduler().pattern().id, 7);
@@ -256,8 +252,7 @@ TEST(Walking, TheRunningGaitIsDrivenWithinItsOwnLimitsUntilTheNextOneTakesOver) 
       if (walker.scheduler().pattern().id == 7) {
         EXPECT_GE(walker.ramped_velocity().z(), bound.velocity_min[2] - 1e-9) << bound_s;
       }
-      const GroundTruth g = sim.backend.ground_truth();
-      worst_tilt = std::max(worst_tilt, std::acos(1 - 2 * (g.quat[1] * g.quat[1] + g.quat[2] * g.quat[2])));
+      worst_tilt = std::max(worst_tilt, sim.tilt_truth());
     });
     EXPECT_TRUE(sim.upright()) << bound_s;
     EXPECT_LT(worst_tilt, 0.4) << bound_s;
@@ -277,9 +272,10 @@ TEST(Walking, TheVariableTrotStartsWithTheCycleOfTheSpeedItIsAskedForAndNotTheSl
     double worst_tilt = 0.0;
     sim.run_until(kStart + pronk_s + 3.0, [&](const CycleRecord&) {
       const GaitPattern& running = sim.controller.walker().scheduler().pattern();
-      if (running.id == 26) EXPECT_EQ(running.period_segments, fast.period_segments) << pronk_s;
-      const GroundTruth g = sim.backend.ground_truth();
-      worst_tilt = std::max(worst_tilt, std::acos(1 - 2 * (g.quat[1] * g.quat[1] + g.quat[2] * g.quat[2])));
+      if (running.id == 26) {
+        EXPECT_EQ(running.period_segments, fast.period_segments) << pronk_s;
+      }
+      worst_tilt = std::max(worst_tilt, sim.tilt_truth());
     });
     EXPECT_TRUE(sim.upright()) << pronk_s;
     EXPECT_LT(worst_tilt, 0.4) << pronk_s;
