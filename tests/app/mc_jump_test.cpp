@@ -108,12 +108,13 @@ TEST(McJumps, JumpForwardThirtyCentimetresLandsWithinFifteenPercentAndStands) {
   EXPECT_NEAR(jump.final_drop_m, 0.0, 0.02);
 }
 
-TEST(McJumps, JumpForwardSixtyCentimetresReachesTheDocumentedFortyAndStands) {
-  // the landing brakes at most 1.2 m/s: the 12 Nm body reaches about 45 cm (docs/jumps.md)
+TEST(McJumps, JumpForwardSixtyCentimetresLandsWithinFifteenPercentAndStands) {
+  // the push leaves slower than planned (the motors' torque falls with speed): the feet, placed
+  // in the air from the take-off the push was on course for, reach out for the rest
   JumpRun run;
   const JumpOutcome jump = run.jump(jump_command(1));
   expect_landed_and_standing(jump, 16, 1);
-  EXPECT_GT(jump.displacement_m.x(), 0.4);
+  EXPECT_NEAR(jump.displacement_m.x(), 0.6, 0.15 * 0.6);
   EXPECT_NEAR(jump.displacement_m.y(), 0.0, 0.05);
 }
 

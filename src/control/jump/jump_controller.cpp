@@ -35,6 +35,14 @@ void set_leg(JointCommand& command, std::size_t leg, const Eigen::Vector3d& q, c
   }
 }
 
+// the vertical ground force on a foot (world), from its joint torques beyond the leg's own weight
+double vertical_foot_force_n(const RobotState& state, std::size_t leg) {
+  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravityMPerS2);
+  const Eigen::Vector3d q = leg_vector(state.q, leg);
+  const Eigen::Vector3d tau = leg_vector(state.tau, leg) - leg_gravity_torque(leg, q, gravity_body);
+  return (state.orientation * -foot_force_from_torque(foot_jacobian(leg, q), tau)).z();
+}
+
 }  // namespace
 
 JumpControllerConfig default_jump_controller_config() {
@@ -75,6 +83,8 @@ void JumpController::start(const RobotState& state, const JumpPlan& plan) {
   const Eigen::Vector3d rpy = level.body_rpy(state);
   const Eigen::Matrix3d tilt = rotation_from_rpy(Eigen::Vector3d(rpy.x(), rpy.y(), 0.0));
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) stand_feet_[leg] = tilt * state.foot_position_body[leg];
+  Eigen::Vector3d velocity;
+  level.estimate(state, kAllLegs, start_position_, velocity);
   stand_.start(state);
   QpStandGoal crouch;
   crouch.pose.position = {plan_.crouch_offset_m.x(), plan_.crouch_offset_m.y(), plan_.crouch_height_m};
@@ -102,13 +112,62 @@ void JumpController::begin_push(const RobotState& state) {
   frame_.anchor(state);
   Eigen::Vector3d velocity;
   frame_.estimate(state, kAllLegs, push_origin_, velocity);
+  takeoff_velocity_ = plan_.takeoff_velocity_m_s;
   for (Eigen::Vector3d& force : forces_) force.setZero();
 }
 
 void JumpController::begin_flight(const RobotState& state) {
+  place_landing();
   phase_ = JumpPhase::Flight;
   phase_start_s_ = state.time_s;
   takeoff_q_ = state.q;
+}
+
+void JumpController::measure_push_progress(const RobotState& state) {
+  // the push's progress, measured while every foot still pushes (near the take-off the legs are
+  // nearly straight and leaving the ground: joint rates then give a poor velocity), predicts the
+  // take-off: the trunk's velocity as that share of its plan
+  const double t = state.time_s - phase_start_s_;
+  if (t > config_.push_measured_fraction * plan_.push_duration_s) return;
+  Eigen::Vector3d position, velocity;
+  frame_.estimate(state, kAllLegs, position, velocity);
+  const Eigen::Vector3d planned = plan_.push_acceleration_m_s2 * t;
+  const Eigen::Vector2d planned_xy = planned.head<2>();
+  takeoff_velocity_ = plan_.takeoff_velocity_m_s;
+  if (planned_xy.squaredNorm() > 1e-4) {
+    takeoff_velocity_.head<2>() *= velocity.head<2>().dot(planned_xy) / planned_xy.squaredNorm();
+  }
+  if (planned.z() > 1e-2) takeoff_velocity_.z() *= velocity.z() / planned.z();
+}
+
+void JumpController::place_landing() {
+  // the centre of mass flies from the planned take-off point with the velocity the push was on
+  // course for (it may fall short of its plan: the motors' torque falls with speed) down to the
+  // touchdown height
+  const Eigen::Vector3d position = push_origin_ + plan_.push_stroke_m;
+  const Eigen::Vector3d& velocity = takeoff_velocity_;
+  const Eigen::Vector3d com_velocity = plan_.momentum_map * velocity;
+  const double touchdown_height_m = plan_.takeoff_height_m + plan_.flight_travel_m.z();
+  const double flight_s = flight_time_s(com_velocity.z(), position.z() - touchdown_height_m);
+  const Eigen::Vector2d travelled = position.head<2>() + com_velocity.head<2>() * flight_s - start_position_.head<2>();
+  // the stand ends centred over the landed feet: they land ahead by what is still to go, and at
+  // least by what the landing's braking carries the trunk
+  Eigen::Vector2d offset = plan_.planned_displacement_m - travelled;
+  const Eigen::Vector2d braking = braking_distance(com_velocity.head<2>(), config_.limits);
+  if (braking.norm() > 1e-9) {
+    const Eigen::Vector2d along = braking.normalized();
+    offset += std::max(braking.norm() - offset.dot(along), 0.0) * along;
+  }
+  // along the body the leading pair lands further ahead and brakes, the trailing pair less (the
+  // centre of mass stays ahead of it); sideways the four land alike
+  const double spread_m = config_.landing_spread_fraction * offset.x();
+  const double trailing_max_m = config_.landing_trailing_offset_max_m;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const bool leading = (stand_feet_[leg].x() >= 0.0) == (offset.x() >= 0.0);
+    landing_offsets_[leg] = offset;
+    landing_offsets_[leg].x() += leading ? spread_m : -spread_m;
+    if (!leading) landing_offsets_[leg].x() = std::clamp(landing_offsets_[leg].x(), -trailing_max_m, trailing_max_m);
+  }
 }
 
 void JumpController::begin_landing(const RobotState& state) {
@@ -186,6 +245,7 @@ void JumpController::push(const RobotState& state, JointCommand& command) {
 
   Eigen::Vector3d position, velocity;
   frame_.estimate(state, kAllLegs, position, velocity);
+  measure_push_progress(state);
   const Eigen::Matrix3d rotation = frame_.body_rotation(state);
   const Eigen::Vector3d omega = frame_.angular_velocity(state);
 
@@ -247,17 +307,30 @@ void JumpController::fly(const RobotState& state, JointCommand& command) {
   const double t = state.time_s - phase_start_s_;
   const double s = smooth_step(std::clamp(t / config_.swing_duration_s, 0.0, 1.0));
   // the landing pose: each foot where it stood before the jump (relative to the trunk), ahead by
-  // the planned offset, at the touchdown height below the trunk, whatever the trunk's attitude.
+  // its landing offset (place_landing), at the touchdown height below the trunk, whatever the
+  // trunk's attitude.
   // The offset is in the take-off heading: it turns back by the yaw since take-off
   const Eigen::Vector3d rpy = frame_.body_rpy(state);
   const Eigen::Matrix3d tilt = rotation_from_rpy(Eigen::Vector3d(rpy.x(), rpy.y(), 0.0));
-  const Eigen::Vector3d offset = rotation_from_rpy(Eigen::Vector3d(0.0, 0.0, -rpy.z())) *
-                                 Eigen::Vector3d(plan_.landing_foot_offset_m.x(), plan_.landing_foot_offset_m.y(), 0.0);
+  const Eigen::Matrix3d unturn = rotation_from_rpy(Eigen::Vector3d(0.0, 0.0, -rpy.z()));
   const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravityMPerS2);
+  const double leg_m = config_.landing_leg_extension * (robot::kThighLength + robot::kShankLength);
+  const double foot_z = -config_.limits.touchdown_height_m + robot::kFootRadius;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    Eigen::Vector3d foot = stand_feet_[leg] + offset;
-    foot.z() = -config_.limits.touchdown_height_m + robot::kFootRadius;
-    const LegIkResult ik = inverse_kinematics_in_body(leg, tilt.transpose() * foot);
+    const Eigen::Vector2d& landing = landing_offsets_[leg];
+    Eigen::Vector3d foot = stand_feet_[leg] + unturn * Eigen::Vector3d(landing.x(), landing.y(), 0.0);
+    foot.z() = foot_z;
+    // a foot beyond the leg's reach lands where the leg, nearly straight, points at it (higher:
+    // it touches down later and further on)
+    Eigen::Vector3d foot_body = tilt.transpose() * foot;
+    const Eigen::Vector3d hip = hip_position(leg);
+    const Eigen::Vector2d sagittal(foot_body.x() - hip.x(), foot_body.z() - hip.z());
+    if (sagittal.norm() > leg_m) {
+      const Eigen::Vector2d reached = sagittal * (leg_m / sagittal.norm());
+      foot_body.x() = hip.x() + reached.x();
+      foot_body.z() = hip.z() + reached.y();
+    }
+    const LegIkResult ik = inverse_kinematics_in_body(leg, foot_body);
     const Eigen::Vector3d from = leg_vector(takeoff_q_, leg);
     const Eigen::Vector3d q = from + (ik.q - from) * s;
     const Eigen::Vector3d tau = leg_gravity_torque(leg, leg_vector(state.q, leg), gravity_body);
@@ -269,12 +342,8 @@ bool JumpController::touched_down(const RobotState& state) const {
   const double t = state.time_s - phase_start_s_;
   if (t >= plan_.flight_duration_s + config_.touchdown_latest_extra_s) return true;
   if (t < config_.touchdown_earliest_fraction * plan_.flight_duration_s) return false;
-  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravityMPerS2);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    const Eigen::Vector3d q = leg_vector(state.q, leg);
-    const Eigen::Vector3d tau = leg_vector(state.tau, leg) - leg_gravity_torque(leg, q, gravity_body);
-    const Eigen::Vector3d ground_reaction = -foot_force_from_torque(foot_jacobian(leg, q), tau);
-    if ((state.orientation * ground_reaction).z() > config_.touchdown_force_n) return true;
+    if (vertical_foot_force_n(state, leg) > config_.touchdown_force_n) return true;
   }
   return false;
 }

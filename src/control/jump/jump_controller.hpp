@@ -39,8 +39,17 @@ struct JumpControllerConfig {
   double push_overrun_fraction = 1.4;
   double push_joint_kp = 20.0;
   double push_joint_kd = 0.5;
+  // the push's progress up to this share of its planned time predicts the take-off velocity
+  double push_measured_fraction = 0.75;
   // flight: the legs swing to the landing pose in this time
   double swing_duration_s = 0.12;
+  // landing placement, from the take-off as it happened: the leading feet (along the jump) land
+  // ahead of the mean offset by this share of it and the trailing feet behind it, those at most
+  // this far ahead of their stand place (further, the trunk stopped by the leading legs sits down
+  // behind them); a leg reaches at most this share of its full length (thigh + shank)
+  double landing_spread_fraction = 0.5;
+  double landing_trailing_offset_max_m = 0.1;
+  double landing_leg_extension = 0.98;
   double flight_joint_kp = 50.0;
   double flight_joint_kd = 1.2;
   // touchdown: a foot carrying this much (from its joint torques) after this share of the flight
@@ -87,6 +96,11 @@ class JumpController {
   void begin_push(const RobotState& state);
   void begin_flight(const RobotState& state);
   void begin_landing(const RobotState& state);
+  // the take-off velocity the push is on course for (stance frame)
+  void measure_push_progress(const RobotState& state);
+  // where each foot lands relative to its stand place: what ends the stand at the plan's
+  // displacement from the take-off the push really gave
+  void place_landing();
   void push(const RobotState& state, JointCommand& command);
   void fly(const RobotState& state, JointCommand& command);
   bool push_done(const RobotState& state, double t) const;
@@ -103,7 +117,11 @@ class JumpController {
   double start_s_ = 0.0;
   double last_time_s_ = 0.0;
   bool centred_ = false;
-  Eigen::Vector3d push_origin_ = Eigen::Vector3d::Zero();  // trunk at the push's start (stance frame)
+  Eigen::Vector3d start_position_ = Eigen::Vector3d::Zero();    // trunk when the jump began (stance frame)
+  Eigen::Vector3d takeoff_velocity_ = Eigen::Vector3d::Zero();  // trunk, as the push's progress predicts it
+  Eigen::Vector3d push_origin_ = Eigen::Vector3d::Zero();       // trunk at the push's start (stance frame)
+  // each foot's landing place ahead of its stand place (take-off heading), set at take-off
+  std::array<Eigen::Vector2d, kNumLegs> landing_offsets_{};
   JointArray<double> takeoff_q_{};
   std::array<Eigen::Vector3d, kNumLegs> stand_feet_{};  // before the jump, from the trunk (level axes)
   std::array<Eigen::Vector3d, kNumLegs> forces_{};

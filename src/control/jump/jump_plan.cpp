@@ -15,12 +15,6 @@ namespace {
 
 using robot::kGravityMPerS2;
 
-// time from take-off until the trunk, rising at vz, comes down by drop_m (negative: rises)
-double flight_time_s(double vz, double drop_m) {
-  const double discriminant = vz * vz + 2.0 * kGravityMPerS2 * drop_m;
-  return (vz + std::sqrt(std::max(discriminant, 0.0))) / kGravityMPerS2;
-}
-
 // the legs with the feet below their stand positions, the trunk at this height
 std::array<Eigen::Vector3d, kNumLegs> legs_at_height(double height_m) {
   const Eigen::Vector3d stand(robot::kStandPose[0], robot::kStandPose[1], robot::kStandPose[2]);
@@ -34,6 +28,15 @@ std::array<Eigen::Vector3d, kNumLegs> legs_at_height(double height_m) {
 }
 
 }  // namespace
+
+double flight_time_s(double vz, double drop_m) {
+  const double discriminant = vz * vz + 2.0 * kGravityMPerS2 * drop_m;
+  return (vz + std::sqrt(std::max(discriminant, 0.0))) / kGravityMPerS2;
+}
+
+Eigen::Vector2d braking_distance(const Eigen::Vector2d& com_horizontal_velocity, const JumpLimits& limits) {
+  return com_horizontal_velocity * (com_horizontal_velocity.norm() / (2.0 * limits.landing_braking_m_s2));
+}
 
 Eigen::Matrix3d standing_momentum_map(const std::array<Eigen::Vector3d, 4>& leg_q, double mass_kg) {
   Eigen::Matrix3d map = Eigen::Matrix3d::Identity();
@@ -136,7 +139,7 @@ void finish_plan(JumpPlan& plan, const Eigen::Vector3d& com_velocity, double dro
   plan.crouch_offset_m = -0.5 * plan.push_stroke_m.head<2>();
   const Eigen::Vector2d horizontal = com_velocity.head<2>();
   plan.flight_travel_m = {horizontal.x() * plan.flight_duration_s, horizontal.y() * plan.flight_duration_s, -drop_m};
-  plan.landing_foot_offset_m = horizontal * (horizontal.norm() / (2.0 * limits.landing_braking_m_s2));
+  plan.landing_foot_offset_m = braking_distance(horizontal, limits);
   plan.apex_height_m = limits.takeoff_height_m + com_velocity.z() * com_velocity.z() / (2.0 * kGravityMPerS2);
   plan.planned_displacement_m = planned_displacement(plan);
 }

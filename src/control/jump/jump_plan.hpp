@@ -98,6 +98,13 @@ JumpPlan plan_jump(const JumpTarget& target, const JumpLimits& limits);
 // says which); NaN or Inf counts as 0
 JumpPlan plan_force_jump(const Eigen::Vector3d& acceleration, double yaw_acceleration, const JumpLimits& limits);
 
+// time from take-off until the centre of mass, rising at vz, comes down by drop_m (negative: rises)
+double flight_time_s(double vz, double drop_m);
+
+// how far the landing carries the centre of mass while it brakes this horizontal velocity
+// (limits.landing_braking_m_s2): where the feet land ahead of it
+Eigen::Vector2d braking_distance(const Eigen::Vector2d& com_horizontal_velocity, const JumpLimits& limits);
+
 // the robot's linear momentum per unit mass when the trunk moves at v (level, not turning) and
 // every foot stands still: K v, K = I - (1 / M) sum_legs leg_mass_jacobian J_foot^-1, for the legs at
 // these joint angles (abad, hip, knee per leg)

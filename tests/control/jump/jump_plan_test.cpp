@@ -64,6 +64,31 @@ TEST(JumpPlan, TheFlightLastsAsLongAsTheIntegratedBallisticPathAndTheDisplacemen
   }
 }
 
+TEST(JumpPlan, TheFlightTimeAndTheBrakingDistanceMatchTheArcAndTheDecelerationIntegratedStepByStep) {
+  // what the controller places the feet with in the air, from the take-off the push gave
+  for (const double vz : {1.2, 1.8, 2.4}) {
+    for (const double drop_m : {-0.1, 0.0, 0.02, 0.12}) {
+      const Flight flight = integrate_flight(Eigen::Vector3d(0.0, 0.0, vz), 0.0, -drop_m);
+      EXPECT_NEAR(flight_time_s(vz, drop_m), flight.duration_s, 1e-5) << vz << " m/s, drop " << drop_m;
+    }
+  }
+  const JumpLimits limits;
+  constexpr double kDt = 1e-6;
+  for (const Eigen::Vector2d& velocity : {Eigen::Vector2d(1.2, 0.0), Eigen::Vector2d(-0.3, 0.6)}) {
+    // slow down at the landing's braking, along the velocity, until at rest
+    Eigen::Vector2d v = velocity;
+    Eigen::Vector2d travelled = Eigen::Vector2d::Zero();
+    const Eigen::Vector2d deceleration = limits.landing_braking_m_s2 * velocity.normalized();
+    while (v.dot(velocity) > 0.0) {
+      travelled += v * kDt;
+      v -= deceleration * kDt;
+    }
+    const Eigen::Vector2d braking = braking_distance(velocity, limits);
+    EXPECT_NEAR(braking.x(), travelled.x(), 1e-5);
+    EXPECT_NEAR(braking.y(), travelled.y(), 1e-5);
+  }
+}
+
 TEST(JumpPlan, ThePushIsAConstantAccelerationFromTheCrouchToTheTakeoffHeight) {
   const JumpLimits limits;
   const JumpPlan plan = plan_jump(JumpTarget{{0.3, 0.1}, 0.5, 0.0, 0.0}, limits);
