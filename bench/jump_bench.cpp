@@ -4,7 +4,7 @@
 // torque and motor temperature rise, and falls; and the plan's compute time. Control runs on the
 // robot's own noisy estimate; the simulator's truth only scores. Prints a markdown table
 // (docs/jumps.md).
-//   jump_bench [--seeds=201-250] [--jumps=0,1,4] [--verbose]
+//   jump_bench [--seeds=401-450] [--jumps=0,1,4] [--verbose]
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -148,8 +148,8 @@ bool on_target(const JumpSpec& spec, const Figures& f) {
 }  // namespace
 
 int main(int argc, char** argv) {
-  long first_seed = 201;
-  long last_seed = 250;
+  long first_seed = 401;
+  long last_seed = 450;
   bool verbose = false;
   std::vector<int> ids;
   for (int i = 1; i < argc; ++i) {
