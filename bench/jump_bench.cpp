@@ -1,6 +1,6 @@
 // Jumps (mode 16) over seeded runs with sensor noise: for each jump id, what it reached (trunk
 // displacement, turn, apex rise above the stand), the flight time, the landing impact (peak
-// vertical ground force summed over the feet, from the simulator's joint torques), the peak joint
+// vertical ground force summed over the feet, from the simulator's contact forces), the peak joint
 // torque and motor temperature rise, and falls; and the plan's compute time. Control runs on the
 // robot's own noisy estimate; the simulator's truth only scores. Prints a markdown table
 // (docs/jumps.md).
@@ -14,7 +14,6 @@
 
 #include "app/lockstep_client.hpp"
 #include "app/simulated_robot.hpp"
-#include "core/leg_kinematics.hpp"
 #include "core/orientation.hpp"
 #include "modes/jump_mode.hpp"
 #include "soak_support.hpp"
@@ -41,18 +40,9 @@ Eigen::Vector3d rpy_of(const GroundTruth& g) {
   return rpy_from_quaternion(Eigen::Quaterniond(g.quat[0], g.quat[1], g.quat[2], g.quat[3]));
 }
 
-// the vertical ground force on the feet: what the joint torques hold (statics), world frame
+// the ground's vertical force on the four feet, from the simulator's contacts
 double vertical_foot_force(const GroundTruth& g) {
-  const Eigen::Quaterniond body(g.quat[0], g.quat[1], g.quat[2], g.quat[3]);
-  double total = 0.0;
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    if (!g.foot_contact[leg]) continue;
-    const std::size_t j = kJointsPerLeg * leg;
-    const Vec3 q(g.q[j], g.q[j + 1], g.q[j + 2]);
-    const Vec3 tau(g.tau[j], g.tau[j + 1], g.tau[j + 2]);
-    total += (body * -foot_force_from_torque(foot_jacobian(leg, q), tau)).z();
-  }
-  return total;
+  return g.foot_force_z_n[0] + g.foot_force_z_n[1] + g.foot_force_z_n[2] + g.foot_force_z_n[3];
 }
 
 Figures run_jump(int id, long seed, bool verbose) {

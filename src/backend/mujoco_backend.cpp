@@ -178,7 +178,15 @@ GroundTruth MujocoBackend::ground_truth() const {
   for (int c = 0; c < data_->ncon; ++c) {
     const mjContact& contact = data_->contact[c];
     for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-      if (contact.geom1 == foot_geom_[leg] || contact.geom2 == foot_geom_[leg]) truth.foot_contact[leg] = true;
+      if (contact.geom1 != foot_geom_[leg] && contact.geom2 != foot_geom_[leg]) continue;
+      truth.foot_contact[leg] = true;
+      // the contact force in its frame (normal, two tangents; the frame's rows in world axes):
+      // its world z, pointing up on the foot whichever geom MuJoCo names first
+      mjtNum force[6];
+      mj_contactForce(model_, data_, c, force);
+      double z = 0.0;
+      for (int k = 0; k < 3; ++k) z += contact.frame[3 * k + 2] * force[k];
+      truth.foot_force_z_n[leg] += std::abs(z);
     }
   }
   return truth;

@@ -22,6 +22,8 @@ struct GroundTruth {
   std::array<double, 3> angular_velocity_body{};
   // each foot (FR, FL, RR, RL) touches the ground or terrain in the simulator's contact list
   std::array<bool, kNumLegs> foot_contact{};
+  // the ground's vertical force on each foot (N, world z), from the simulator's contact forces
+  std::array<double, kNumLegs> foot_force_z_n{};
   // joints in the SDK / URDF convention (core/joint_layout.hpp); tau is what the motors applied
   JointArray<double> q{};
   JointArray<double> qd{};

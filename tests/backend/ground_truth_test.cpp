@@ -50,6 +50,25 @@ TEST(GroundTruth, FootContactsAgreeWithTheFeetHeightsWhileALimpRobotFallsAndSett
   EXPECT_GT(ticks_with_all_feet_down, 0);
 }
 
+TEST(GroundTruth, TheFeetCarryTheRobotsWeightWhenItStandsStill) {
+  StandUpController stand_up(default_stand_up_config());
+  testing::LockstepSim sim(testing::sim_config(0.3), stand_up);
+  sim.run_for(3.0);
+  // standing still: the ground holds the whole robot's weight (MuJoCo's masses, summed here)
+  double mass_kg = 0.0;
+  for (int body = 0; body < sim.backend.model()->nbody; ++body) mass_kg += sim.backend.model()->body_mass[body];
+  const GroundTruth truth = sim.backend.ground_truth();
+  double total_n = 0.0;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    EXPECT_GT(truth.foot_force_z_n[leg], 0.1 * mass_kg * 9.81) << "leg " << leg;
+    total_n += truth.foot_force_z_n[leg];
+  }
+  EXPECT_NEAR(total_n, mass_kg * sim.backend.model()->opt.gravity[2] * -1.0, 0.02 * mass_kg * 9.81);
+  // in the air, none
+  sim.backend.set_base_pose({0.0, 0.0, 1.0}, {1.0, 0.0, 0.0, 0.0});
+  for (double force : sim.backend.ground_truth().foot_force_z_n) EXPECT_EQ(force, 0.0);
+}
+
 TEST(GroundTruth, ALiftedRobotHasNoFootOnTheGround) {
   StandUpController stand_up(default_stand_up_config());
   testing::LockstepSim sim(testing::sim_config(0.3), stand_up);
