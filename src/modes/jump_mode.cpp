@@ -78,6 +78,11 @@ void JumpMode::update(const RobotState& state, const HighLevelCommand& command) 
 
 void JumpMode::run(const RobotState& state, JointCommand& command) { controller_.compute(state, command); }
 
+ContactPlan JumpMode::contact_plan() const {
+  if (controller_.phase() != JumpPhase::Flight) return std::nullopt;
+  return ContactSchedule{};  // every foot: probability 0
+}
+
 int JumpMode::progress_percent() const { return static_cast<int>(std::floor(controller_.progress() * 100.0)); }
 
 }  // namespace cerebellum

@@ -68,6 +68,10 @@ class JumpMode final : public Mode {
   bool holds_entry() const override { return !controller_.finished(); }
   bool damping_protection() const override { return controller_.failed(); }
   bool airborne() const override { return !controller_.finished(); }
+  // in flight no foot is on the ground: the legs swinging to the landing pose load their joints
+  // as if their feet pushed, and the estimator, judging contacts from those forces, took them
+  // for stance feet; otherwise nothing is planned (the force estimate judges the contacts)
+  ContactPlan contact_plan() const override;
 
   const JumpController& controller() const { return controller_; }
 
