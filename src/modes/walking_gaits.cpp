@@ -53,7 +53,8 @@ void WalkingGaits::run(const RobotState& state, JointCommand& command) {
     return;
   }
   controller_.compute(state, command);
-  plan_ = controller_.contact_schedule();
+  // standing, the estimator judges the feet by their load (a shove lifts planted feet)
+  plan_ = controller_.standing() ? ContactPlan{} : ContactPlan{controller_.contact_schedule()};
 }
 
 }  // namespace cerebellum

@@ -114,6 +114,21 @@ int entry_segment(const GaitPattern& pattern, const std::array<double, kNumLegs>
   return best;
 }
 
+int sideways_entry_segment(const GaitPattern& pattern, double lateral_velocity_m_s, double min_speed_m_s) {
+  if (std::abs(lateral_velocity_m_s) < min_speed_m_s) return 0;
+  constexpr auto fr = static_cast<std::size_t>(Leg::FR), fl = static_cast<std::size_t>(Leg::FL);
+  constexpr auto rr = static_cast<std::size_t>(Leg::RR), rl = static_cast<std::size_t>(Leg::RL);
+  // the rear foot on the side the body moves toward (body y: left is +)
+  const std::size_t toward = lateral_velocity_m_s > 0.0 ? rl : rr;
+  // a trot: each diagonal shares its timing, the two diagonals take turns
+  const bool trot = pattern.offsets[fr] == pattern.offsets[rl] && pattern.offsets[fl] == pattern.offsets[rr] &&
+                    pattern.offsets[fr] != pattern.offsets[fl] && pattern.stance[fr] == pattern.stance[rl] &&
+                    pattern.stance[fl] == pattern.stance[rr] && steps(pattern);
+  if (!trot) return 0;
+  // the cycle begins where that foot's stance begins
+  return ((pattern.offsets[toward] % pattern.period_segments) + pattern.period_segments) % pattern.period_segments;
+}
+
 GaitPattern stand_bridge_pattern(int segments) {
   const int period = std::max(segments, 1);
   return make(kStandGaitId, {period, period}, {0, 0, 0, 0}, {0, 0, 0}, {0, 0, 0});

@@ -286,6 +286,7 @@ void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& ph
 
 void LocomotionController::change_pattern_if_due(const RobotState& state) {
   GaitPattern next = scheduler_.pattern();
+  const bool leaving_bridge = bridging_;
   // the first `axes` of a velocity within the new gait's limits widened by a margin
   const auto within = [&](const Eigen::Vector3d& velocity, int axes, double margin) {
     for (int axis = 0; axis < axes; ++axis) {
@@ -349,7 +350,11 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
     for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
       foot_y[leg] = state.foot_position_body[leg].y() - stand_com_body_.y();
     }
-    scheduler_.restart(next, entry_segment(next, foot_y));
+    int segment = entry_segment(next, foot_y);
+    if (segment == 0 && !leaving_bridge) {
+      segment = sideways_entry_segment(next, state.velocity_body.y(), config_.sideways_entry_speed_m_s);
+    }
+    scheduler_.restart(next, segment);
   }
   // feet already in the air start their new swing from where they are
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();

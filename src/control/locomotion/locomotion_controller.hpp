@@ -50,6 +50,10 @@ struct LocomotionConfig {
   // swing pair would otherwise lift the legs that have to stop it; longer bridges fell more, the
   // feet stand while the body moves on
   int gait_bridge_segments = 1;
+  // a trot that leaves a stand (not the bridge) while the body moves sideways faster than this
+  // (m/s) begins with the diagonal that catches it (sideways_entry_segment). After a bridge the
+  // trot's own alternation goes on: choosing there too fell more often in the soak
+  double sideways_entry_speed_m_s = 0.1;
   // |v| |yaw rate| above this (m/s^2) is clamped by lowering the yaw rate: friction 0.4 allows at
   // most 3.9 m/s^2 with no margin for the gait's own forces; 2.5 still fell in the soak
   double max_centripetal_accel_m_s2 = 2.0;
@@ -122,6 +126,11 @@ class LocomotionController {
   const Eigen::Vector3d& ramped_velocity() const { return velocity_; }
   // each leg's place in the schedule; after compute(), the contacts planned for the next tick
   ContactSchedule contact_schedule() const;
+  // a stand gait runs (every foot down, not the bridge between two stepping gaits): its schedule
+  // says nothing a shove could not undo. A push tips the trunk off its far feet while the stand
+  // still has them down; trusted, they moved with the trunk, read it at rest, and the velocity
+  // estimate said 0.05 m/s for a true 0.7
+  bool standing() const { return !steps(scheduler_.pattern()) && !scheduler_.playing() && !bridging_; }
 
  private:
   void ramp_velocity();

@@ -146,5 +146,27 @@ TEST(Gait, GaitsWithoutALonePairBeginAtTheirCycleStartWhereverTheFeetAre) {
   EXPECT_EQ(entry_segment(variable_trot_pattern(1.0), {0.0, 0.0, 0.0, 0.0}), 0);
 }
 
+TEST(Gait, ATrotLeavingAStandSidewaysBeginsWithTheDiagonalWhoseRearFootIsOnTheSideTheBodyMovesToward) {
+  const std::array<bool, kNumLegs> rear_left_diagonal{true, false, false, true};   // FR, RL stand
+  const std::array<bool, kNumLegs> rear_right_diagonal{false, true, true, false};  // FL, RR stand
+  for (int id : {27, 3, 10}) {
+    const GaitPattern trot = *gait_pattern(id);
+    EXPECT_EQ(first_lone_stance(trot, sideways_entry_segment(trot, 0.5, 0.1)), rear_left_diagonal) << id;
+    EXPECT_EQ(first_lone_stance(trot, sideways_entry_segment(trot, -0.5, 0.1)), rear_right_diagonal) << id;
+    // moving right, the first swing is whole: the swinging diagonal lifts at the start of its swing
+    GaitScheduler scheduler(0.03);
+    scheduler.restart(trot, sideways_entry_segment(trot, -0.5, 0.1));
+    EXPECT_TRUE(scheduler.leg_phase(static_cast<std::size_t>(Leg::RR)).stance) << id;
+    EXPECT_NEAR(scheduler.leg_phase(static_cast<std::size_t>(Leg::RR)).stance_phase, 0.0, 1e-12) << id;
+  }
+  const GaitPattern variable = variable_trot_pattern(1.0);
+  EXPECT_EQ(first_lone_stance(variable, sideways_entry_segment(variable, -0.5, 0.1)), rear_right_diagonal);
+}
+
+TEST(Gait, ASlowBodyOrAGaitThatIsNoTrotBeginsAtItsCycleStart) {
+  EXPECT_EQ(sideways_entry_segment(*gait_pattern(10), -0.05, 0.1), 0);
+  for (int id : {7, 2, kStandGaitId}) EXPECT_EQ(sideways_entry_segment(*gait_pattern(id), -0.5, 0.1), 0) << id;
+}
+
 }  // namespace
 }  // namespace cerebellum
