@@ -114,6 +114,18 @@ TEST(McPushRecovery, TheStandWithPushRecoveryTakesA15NsShoveBackwardAndStaysInTh
   EXPECT_TRUE(outcome.all_feet_down_at_the_end);
 }
 
+TEST(McPushRecovery, TheStandWithPushRecoveryTakesA20NsShoveFromTheFrontOrTheTailAndStandsAgainWithin3s) {
+  // 40 N along the body for 0.5 s: with gait 3 as the catching trot, the pitched trunk put a
+  // planted foot outside the interface's workspace and the footpos watch damped the robot
+  for (const double along : {1.0, -1.0}) {
+    const ShoveOutcome outcome = shove(kStandGaitId, 20.0, 0.5, 3.0, {along, 0.0});
+    EXPECT_LT(outcome.largest_tilt_rad, 0.6) << along;
+    EXPECT_EQ(outcome.final_mode, 11) << along;
+    EXPECT_LT(outcome.final_speed_m_s, 0.05) << along;
+    EXPECT_TRUE(outcome.all_feet_down_at_the_end) << along;
+  }
+}
+
 TEST(McPushRecovery, TheStandWithoutPushRecoveryKeepsEveryFootDownUnderAShoveItCanLeanAgainst) {
   const ShoveOutcome outcome = shove(kStandWithoutPushRecoveryGaitId, 4.0, 0.5, 2.0);
   EXPECT_FALSE(outcome.a_foot_lifted);
