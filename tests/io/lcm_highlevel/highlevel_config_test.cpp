@@ -1,4 +1,5 @@
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cstdio>
 #include <fstream>
@@ -34,7 +35,8 @@ TEST(LcmUrl, ProblemsAreNamed) {
 class HighLevelConfigFile : public ::testing::Test {
  protected:
   std::string write(const std::string& text) {
-    const std::string path = ::testing::TempDir() + "highlevel_config_test.yaml";
+    // one file per test process: ctest runs this suite's tests side by side
+    const std::string path = ::testing::TempDir() + "highlevel_config_test_" + std::to_string(::getpid()) + ".yaml";
     std::ofstream(path) << text;
     return path;
   }
