@@ -80,10 +80,10 @@ TEST(McPushRecovery, TheStandWithPushRecoveryStepsUnderA20NsSidewaysShoveThatTop
 
 TEST(McPushRecovery, TheStandWithPushRecoveryCatchesA25NsShoveFromEitherSideAndStandsAgainWithin3s) {
   // 50 N for 0.5 s: past both the planted stance's tipping force (~36 N) and what friction lets
-  // the feet hold back (~34 N), so it must step while the force still acts. From the left it
-  // caught it only once the velocity estimate stopped trusting the feet the shove had tipped off
-  // the ground; from the right only once the trot began with the diagonal that catches a body
-  // moving right (before, the same diagonal began whichever way the body moved)
+  // the feet hold back (~34 N), so it must step while the force still acts. It fell without either
+  // of two changes: the velocity estimate no longer trusts the feet the shove tipped off the
+  // ground, and the trot begins with the diagonal that catches a body moving toward that side
+  // (before, the same diagonal began whichever way the body moved)
   for (const double side : {1.0, -1.0}) {
     const ShoveOutcome outcome = shove(kStandGaitId, 25.0, 0.5, 3.0, {0.0, side});
     EXPECT_LT(outcome.largest_tilt_rad, 0.6) << side;

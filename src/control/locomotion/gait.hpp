@@ -48,10 +48,10 @@ int entry_segment(const GaitPattern& pattern, const std::array<double, kNumLegs>
 
 // the segment at which a trot begins from a stand while the body moves sideways at
 // lateral_velocity_m_s (body y): the diagonal whose rear foot lies on the side the body moves
-// toward stands first, so the front foot on that side steps out first. From a stand the trot always
-// began with the same diagonal: gait 1 caught 25 N s from its left 5 of 5 times and from its right
-// never; the mirror image of the start makes the two sides mirror images. Below min_speed_m_s, or
-// for a gait that is no trot, the cycle begins at 0
+// toward stands first, so the front foot on that side steps out first, and a push from either side
+// meets the mirror image of the same steps (the trot used to begin with the same diagonal whichever
+// way the body moved; gait 1 then caught 25 N s from one side and fell from the other). Below
+// min_speed_m_s, or for a gait that is no trot, the cycle begins at 0
 int sideways_entry_segment(const GaitPattern& pattern, double lateral_velocity_m_s, double min_speed_m_s);
 
 // where each leg is in the cycle at one instant
