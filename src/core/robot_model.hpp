@@ -21,6 +21,8 @@ inline constexpr double kAbadLength = 0.094;  // lateral offset from abad axis t
 inline constexpr double kThighLength = 0.12;
 inline constexpr double kShankLength = 0.17391;
 inline constexpr double kFootRadius = 0.019;
+// the IMU's place in the body frame (m): its accelerometer also feels the trunk's rotation there
+inline constexpr double kImuPositionBody[3] = {0.0334, -0.0173, 0.0510};
 
 // joint ranges (rad), SDK convention
 struct JointRange {

@@ -25,6 +25,12 @@ double scheduled_contact_trust(const LegContactPlan& plan, double ramp_fraction)
   return std::clamp(plan.probability, 0.0, 1.0) * ramp(std::min(phase, 1.0 - phase), ramp_fraction);
 }
 
+Eigen::Vector3d trunk_origin_acceleration(const Eigen::Vector3d& imu_accel_world, const Eigen::Matrix3d& body_to_world,
+                                          const Eigen::Vector3d& omega_body, const Eigen::Vector3d& alpha_body,
+                                          const Eigen::Vector3d& imu_body) {
+  return imu_accel_world - body_to_world * (alpha_body.cross(imu_body) + omega_body.cross(omega_body.cross(imu_body)));
+}
+
 BodyStateEstimator::BodyStateEstimator(const BodyStateEstimatorConfig& config)
     : config_(config), kinematic_(config.kinematic), filter_(config.filter), ground_(config.ground) {}
 
@@ -35,6 +41,7 @@ void BodyStateEstimator::reset() {
   trust_.fill(0.0);
   time_in_contact_s_.fill(0.0);
   last_time_s_ = 0.0;
+  last_omega_body_.setZero();
   ground_z_m_ = 0.0;
 }
 
@@ -77,10 +84,16 @@ void BodyStateEstimator::update(const SensorFrame& frame, const ContactPlan& pla
       const Eigen::Vector3d foot = filter_.foot_position(leg);
       legs[leg].ground_height_m = ground_.plane().height_at(foot.x(), foot.y());
     }
-    const bool accepted = filter_.predict(state.accel_world, dt, trust_) && filter_.correct(legs);
+    const Eigen::Vector3d alpha_body =
+        dt > 0.0 ? Eigen::Vector3d((state.omega_body - last_omega_body_) / dt) : Eigen::Vector3d::Zero();
+    const Eigen::Vector3d imu_body(robot::kImuPositionBody[0], robot::kImuPositionBody[1], robot::kImuPositionBody[2]);
+    const Eigen::Vector3d accel_world = trunk_origin_acceleration(
+        state.accel_world, state.orientation.toRotationMatrix(), state.omega_body, alpha_body, imu_body);
+    const bool accepted = filter_.predict(accel_world, dt, trust_) && filter_.correct(legs);
     state.valid = accepted;
   }
   last_time_s_ = frame.time_s;
+  last_omega_body_ = state.omega_body;
   write_state(state);
 }
 

@@ -29,6 +29,12 @@ struct BodyStateEstimatorConfig {
 double force_contact_trust(double contact_probability, double time_in_contact_s, double ramp_s);
 // trust of a foot from a schedule: probability ramped in and out at both ends of the stance
 double scheduled_contact_trust(const LegContactPlan& plan, double ramp_fraction);
+// the trunk origin's acceleration (world) from the IMU's (world, gravity removed) at imu_body:
+// a - R (alpha x r + omega x (omega x r)), body rates in the body frame. Uncorrected, a bound's
+// pitching (4 rad/s, 100 rad/s^2) puts about 6 m/s^2 into the prediction that the legs had to undo
+Eigen::Vector3d trunk_origin_acceleration(const Eigen::Vector3d& imu_accel_world, const Eigen::Matrix3d& body_to_world,
+                                          const Eigen::Vector3d& omega_body, const Eigen::Vector3d& alpha_body,
+                                          const Eigen::Vector3d& imu_body);
 
 class BodyStateEstimator final : public StateEstimator {
  public:
@@ -58,6 +64,7 @@ class BodyStateEstimator final : public StateEstimator {
   LinearKalmanFilter::Trust trust_{};
   std::array<double, kNumLegs> time_in_contact_s_{};
   double last_time_s_ = 0.0;
+  Eigen::Vector3d last_omega_body_ = Eigen::Vector3d::Zero();  // for the angular acceleration
   double ground_z_m_ = 0.0;  // world z under the stance feet, kept through flight phases
 };
 

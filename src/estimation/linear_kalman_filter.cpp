@@ -31,6 +31,7 @@ void LinearKalmanFilter::reset() {
   p_.setZero();
   initialized_ = false;
   valid_ = false;
+  time_since_correction_s_ = 0.0;
 }
 
 void LinearKalmanFilter::initialize(const Eigen::Vector3d& position, const Eigen::Vector3d& velocity,
@@ -42,6 +43,7 @@ void LinearKalmanFilter::initialize(const Eigen::Vector3d& position, const Eigen
   p_.diagonal().segment<3>(0).setConstant(config_.initial_position_sigma_m * config_.initial_position_sigma_m);
   p_.diagonal().segment<3>(3).setConstant(config_.initial_velocity_sigma_m_s * config_.initial_velocity_sigma_m_s);
   p_.diagonal().tail<3 * kNumLegs>().setConstant(config_.initial_foot_sigma_m * config_.initial_foot_sigma_m);
+  time_since_correction_s_ = 0.0;
   initialized_ = x_.allFinite() && p_.allFinite();
   valid_ = initialized_;
 }
@@ -78,6 +80,7 @@ bool LinearKalmanFilter::predict(const Eigen::Vector3d& accel_world, double dt_s
     const double foot_variance_rate = t * stance_drift + (1.0 - t) * swing_drift;
     for (int k = 0; k < 3; ++k) p_(foot_index(leg) + k, foot_index(leg) + k) += foot_variance_rate * dt;
   }
+  time_since_correction_s_ += dt;
   valid_ = true;
   return true;
 }
@@ -133,6 +136,18 @@ bool LinearKalmanFilter::correct(const LegObservations& legs) {
     x.noalias() += k_transpose.transpose() * innovation;
     p.noalias() -= k_transpose.transpose() * hp;
   }
+  // the IMU carries the fast changes of velocity; the legs only correct its slow errors
+  const Eigen::Vector3d velocity_change = x.segment<3>(3) - x_.segment<3>(3);
+  const double max_change = config_.max_leg_velocity_correction_m_s2 * time_since_correction_s_;
+  if (velocity_change.norm() > max_change) {
+    const Eigen::Vector3d kept = velocity_change * (max_change / velocity_change.norm());
+    x.segment<3>(3) = x_.segment<3>(3) + kept;
+    // the part left out stays uncertain: without it the filter would refuse the same legs next
+    // tick as if it had already moved, and a true correction (after a flight) would be locked out
+    const Eigen::Vector3d left_out = velocity_change - kept;
+    p.block<3, 3>(3, 3) += left_out * left_out.transpose();
+    ++limited_velocity_corrections_;
+  }
   p = 0.5 * (p + p.transpose()).eval();
   if (!x.allFinite() || !p.allFinite() || (p.diagonal().array() <= 0.0).any()) {
     valid_ = false;
@@ -140,6 +155,7 @@ bool LinearKalmanFilter::correct(const LegObservations& legs) {
   }
   x_ = x;
   p_ = p;
+  time_since_correction_s_ = 0.0;
   valid_ = true;
   return true;
 }

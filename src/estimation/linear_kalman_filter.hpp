@@ -28,6 +28,12 @@ struct LinearKalmanFilterConfig {
   // a leg's velocity whose normalised squared innovation exceeds this (chi-square, 3 degrees of
   // freedom; 16.3 = 99.9 %) is treated as from an untrusted foot
   double velocity_gate_chi2 = 16.3;
+  // the legs may change the trunk velocity by at most this much per second of prediction beyond
+  // what the IMU integrated (m/s^2). An IMU's own errors (bias, the gravity a tilt error leaks in)
+  // stay below 0.5 m/s^2; legs that pull faster are feet in the air or sliding while the plan says
+  // stance: a flying trot's stance pair that bounced off the ground pulled the estimate 1.3 m/s
+  // off in 40 ms, and a fall followed. Infinity: the plain Kalman update
+  double max_leg_velocity_correction_m_s2 = 5.0;
   // uncertainty right after initialize()
   double initial_position_sigma_m = 0.02;
   double initial_velocity_sigma_m_s = 0.1;
@@ -62,7 +68,8 @@ class LinearKalmanFilter {
   // propagate by dt_s under the world acceleration (gravity removed); trust sets each foot's drift.
   // Non-finite or negative input, or no initialisation: skipped, returns false, valid() false.
   bool predict(const Eigen::Vector3d& accel_world, double dt_s, const Trust& trust);
-  // fold in the legs' kinematics; the same skipping rules as predict()
+  // fold in the legs' kinematics; the same skipping rules as predict(). The velocity moves at most
+  // max_leg_velocity_correction_m_s2 times the time predicted since the last correction
   bool correct(const LegObservations& legs);
 
   bool initialized() const { return initialized_; }
@@ -70,6 +77,8 @@ class LinearKalmanFilter {
   bool valid() const { return valid_; }
   // leg velocity measurements the innovation gate has set aside so far
   std::uint64_t gated_velocity_measurements() const { return gated_velocity_measurements_; }
+  // corrections whose velocity change was cut to max_leg_velocity_correction_m_s2
+  std::uint64_t limited_velocity_corrections() const { return limited_velocity_corrections_; }
 
   Eigen::Vector3d position() const { return x_.segment<3>(0); }
   Eigen::Vector3d velocity() const { return x_.segment<3>(3); }
@@ -85,6 +94,8 @@ class LinearKalmanFilter {
   bool initialized_ = false;
   bool valid_ = false;
   std::uint64_t gated_velocity_measurements_ = 0;
+  std::uint64_t limited_velocity_corrections_ = 0;
+  double time_since_correction_s_ = 0.0;
 };
 
 }  // namespace cerebellum

@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <Eigen/Geometry>
 #include <cmath>
 
 #include "core/leg_kinematics.hpp"
@@ -50,6 +51,29 @@ TEST(ContactTrust, ScheduleRampsAtBothEndsOfTheStance) {
   EXPECT_EQ(scheduled_contact_trust({1.0, 1.0}, 0.1), 0.0);
   EXPECT_NEAR(scheduled_contact_trust({0.4, 0.5}, 0.1), 0.4, 1e-12);
   EXPECT_EQ(scheduled_contact_trust({0.0, 0.5}, 0.1), 0.0);
+}
+
+TEST(TrunkOriginAcceleration, RemovesWhatTheRotationAddsAtTheImuAgainstFiniteDifferences) {
+  // the origin accelerates steadily while the trunk turns ever faster about a tilted axis; the
+  // IMU's world acceleration comes from differencing its world position twice
+  const Eigen::Vector3d origin_accel(0.7, -0.3, 0.2), origin_velocity(1.2, 0.4, 0.0);
+  const Eigen::Vector3d axis = Eigen::Vector3d(0.3, 1.0, 0.2).normalized();
+  const double rate = 3.0, rate_change = 80.0;  // rad/s, rad/s^2: a bound's pitching
+  const Eigen::Vector3d imu(robot::kImuPositionBody[0], robot::kImuPositionBody[1], robot::kImuPositionBody[2]);
+  const auto rotation = [&](double t) {
+    return Eigen::AngleAxisd(0.2 + rate * t + 0.5 * rate_change * t * t, axis).toRotationMatrix();
+  };
+  const auto imu_world = [&](double t) {
+    return Eigen::Vector3d(origin_velocity * t + 0.5 * origin_accel * t * t + rotation(t) * imu);
+  };
+  const double t = 0.05, h = 1e-4;
+  const Eigen::Vector3d imu_accel = (imu_world(t + h) - 2.0 * imu_world(t) + imu_world(t - h)) / (h * h);
+  // a rotation about a fixed axis: the body rates lie along it
+  const Eigen::Vector3d omega = axis * (rate + rate_change * t), alpha = axis * rate_change;
+  const Eigen::Vector3d result = trunk_origin_acceleration(imu_accel, rotation(t), omega, alpha, imu);
+  EXPECT_LT((result - origin_accel).norm(), 1e-4);
+  // the correction is not small: uncorrected, the IMU's acceleration is meters per second squared off
+  EXPECT_GT((imu_accel - origin_accel).norm(), 3.0);
 }
 
 TEST(BodyStateEstimator, StandingStillStaysPutAtTheKinematicHeight) {

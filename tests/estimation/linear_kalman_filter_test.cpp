@@ -80,6 +80,57 @@ TEST(LinearKalmanFilter, FindsTheVelocityFromFootPositionsAlone) {
   EXPECT_LT(position_error.norm(), 0.005);
 }
 
+// the trunk at rest by the IMU while every planted leg says it moves at 0.3 m/s (feet pushing in
+// the air while the plan says stance: positions and velocities agree, within the innovation
+// gate) for 20 ms; the estimated speed
+double speed_after_legs_disagree_with_the_imu(const LinearKalmanFilterConfig& config,
+                                              std::uint64_t* limited_corrections = nullptr) {
+  const Eigen::Vector3d p(0.0, 0.0, 0.25);
+  const auto feet = planted_feet();
+  LinearKalmanFilter filter(config);
+  filter.initialize(p, Eigen::Vector3d::Zero(), feet);
+  for (int k = 0; k < 10; ++k) {
+    EXPECT_TRUE(filter.predict(Eigen::Vector3d::Zero(), kDt, kAllPlanted));
+    const Eigen::Vector3d v_legs(0.3, 0.0, 0.0);
+    EXPECT_TRUE(filter.correct(observe(p + v_legs * ((k + 1) * kDt), v_legs, feet, kAllPlanted)));
+  }
+  if (limited_corrections != nullptr) *limited_corrections = filter.limited_velocity_corrections();
+  return filter.velocity().norm();
+}
+
+TEST(LinearKalmanFilter, TheLegsMoveTheVelocityNoFasterThanTheConfiguredRate) {
+  // unsure of its velocity (as after a flight): the plain update would follow the legs at once
+  LinearKalmanFilterConfig config;
+  config.initial_velocity_sigma_m_s = 1.0;
+  const double limit_m_s = config.max_leg_velocity_correction_m_s2 * 10 * kDt;
+  std::uint64_t limited = 0;
+  const double speed_m_s = speed_after_legs_disagree_with_the_imu(config, &limited);
+  EXPECT_GT(limited, 0u);
+  EXPECT_LE(speed_m_s, limit_m_s + 1e-12);
+  EXPECT_GT(speed_m_s, 0.99 * limit_m_s);  // the legs still pull, at the limit
+  // the plain Kalman update follows the legs much further: the limit above can fail
+  LinearKalmanFilterConfig plain = config;
+  plain.max_leg_velocity_correction_m_s2 = std::numeric_limits<double>::infinity();
+  EXPECT_GT(speed_after_legs_disagree_with_the_imu(plain), 2.0 * limit_m_s);
+}
+
+TEST(LinearKalmanFilter, TheLegsStillRemoveAConstantImuBias) {
+  // the IMU reads 0.4 m/s^2 forward for a trunk at rest over planted feet for 2 s: integrated
+  // alone, 0.8 m/s of error
+  const Eigen::Vector3d p(0.0, 0.0, 0.25);
+  const auto feet = planted_feet();
+  LinearKalmanFilter filter;
+  filter.initialize(p, Eigen::Vector3d::Zero(), feet);
+  std::mt19937 rng(5);
+  for (int k = 0; k < 1000; ++k) {
+    ASSERT_TRUE(filter.predict(Eigen::Vector3d(0.4, 0.0, 0.0), kDt, kAllPlanted));
+    LegObservations legs = observe(p, Eigen::Vector3d::Zero(), feet, kAllPlanted);
+    for (LegObservation& leg : legs) leg.body_velocity_world += gaussian(rng, 0.02);
+    ASSERT_TRUE(filter.correct(legs));
+  }
+  EXPECT_LT(filter.velocity().norm(), 0.02);
+}
+
 TEST(LinearKalmanFilter, PredictionMatchesClosedFormIntegration) {
   LinearKalmanFilterConfig config;
   config.accel_noise_density = 0.7;
