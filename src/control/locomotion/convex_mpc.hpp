@@ -29,6 +29,12 @@ struct ConvexMpcConfig {
   // x, y weight of a stand that holds the trunk over its feet (MpcInput::hold_position): at the
   // walking gaits' 2, a steady 20 N sideways drifted the planted stand off its feet at 0.2 m/s
   double stand_position_weight = 40.0;
+  // while only the front or only the rear pair stands (the bound), yaw and yaw rate weigh this
+  // share of their weights: that pair turns the trunk only by sideways forces at its feet, and
+  // those roll the trunk over them. At the full weight (10 against roll's 1) the MPC traded roll
+  // for yaw until the other foot of the pair unloaded and the trunk rolled over the loaded one (a
+  // bound entered turning and sideways, the soak's most common fall)
+  double lone_pair_yaw_weight_share = 0.3;
   double force_weight = 4e-5;
   double friction = 0.4;
   double force_max_n = 150.0;
@@ -67,6 +73,8 @@ struct MpcOutput {
 
 // every foot on the ground at every step of the horizon
 bool stands_throughout(const std::array<std::array<bool, kNumLegs>, kMpcHorizon>& contact);
+// only the front pair or only the rear pair on the ground
+bool front_or_rear_pair_alone(const std::array<bool, kNumLegs>& contact);
 
 class ConvexMpc {
  public:

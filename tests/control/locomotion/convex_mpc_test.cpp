@@ -169,6 +169,49 @@ TEST(ConvexMpc, StandsThroughoutOnlyWhenEveryFootIsDownAtEveryStep) {
   EXPECT_FALSE(stands_throughout(late_lift.contact));
 }
 
+TEST(ConvexMpc, OnlyTheFrontPairOrOnlyTheRearPairStandsAlone) {
+  // all sixteen contact sets: exactly FR+FL and RR+RL, each without any other foot
+  int alone = 0;
+  for (int bits = 0; bits < 16; ++bits) {
+    const std::array<bool, kNumLegs> contact{(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0, (bits & 8) != 0};
+    const bool expected = bits == 0b0011 || bits == 0b1100;
+    EXPECT_EQ(front_or_rear_pair_alone(contact), expected) << bits;
+    alone += front_or_rear_pair_alone(contact);
+  }
+  EXPECT_EQ(alone, 2);
+}
+
+TEST(ConvexMpc, AFrontPairStandingAloneRollsTheTrunkLessToTurnAtItsShareOfTheYawWeight) {
+  // the front pair alone through the horizon, asked to turn at 1 rad/s: its only yaw lever is
+  // sideways force at its feet, which also rolls the trunk over them (here a third less at 0.3)
+  MpcInput in = standing_input();
+  for (int k = 0; k < kMpcHorizon; ++k) {
+    in.contact[k] = {true, true, false, false};
+    in.x_ref[k][2] = -1.0 * 0.03 * (k + 1);
+    in.x_ref[k][8] = -1.0;
+  }
+  // the feet's torque about the trunk's forward axis
+  const auto roll_torque_nm = [&](const MpcOutput& out) {
+    double roll = 0.0;
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) roll += in.foot_from_com[leg].cross(out.forces[leg]).x();
+    return roll;
+  };
+  ConvexMpcConfig full;
+  full.lone_pair_yaw_weight_share = 1.0;
+  ConvexMpc full_weight(full, std::make_unique<qp::GoldfarbIdnaniSolver>());
+  const MpcOutput at_full = full_weight.solve(in);
+  const MpcOutput at_share = make_mpc()->solve(in);
+  ASSERT_EQ(at_full.status, qp::QpStatus::Solved);
+  ASSERT_EQ(at_share.status, qp::QpStatus::Solved);
+  EXPECT_LT(std::abs(roll_torque_nm(at_share)), 0.8 * std::abs(roll_torque_nm(at_full)));
+  // with a trot's diagonal the share does not apply: the same solution either way
+  const MpcOutput trot_full = full_weight.solve(standing_input(0.0, true));
+  const MpcOutput trot_share = make_mpc()->solve(standing_input(0.0, true));
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    EXPECT_LT((trot_full.forces[leg] - trot_share.forces[leg]).norm(), 1e-9);
+  }
+}
+
 TEST(ConvexMpc, GoldfarbIdnaniAgreesWithAlglibOnTheRealProblem) {
   ConvexMpc gi(ConvexMpcConfig{}, std::make_unique<qp::GoldfarbIdnaniSolver>());
   ConvexMpc alglib(ConvexMpcConfig{}, std::make_unique<qp::AlglibQpSolver>());
