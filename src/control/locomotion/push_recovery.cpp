@@ -42,8 +42,11 @@ bool PushRecovery::update(const RobotState& state, double dt_s) {
   const double tip_rate = state.omega_world.head<2>().norm();
   if (!stepping_) {
     const bool out = distance_outside_feet(state, capture_point_world(state)) > -config_.capture_margin_m;
-    const bool fast = state.velocity_world.head<2>().norm() > config_.start_speed_m_s;
-    if (out || fast || tip_rate > config_.tip_rate_rad_s) {
+    const double speed = state.velocity_world.head<2>().norm();
+    const bool fast = speed > config_.start_speed_m_s;
+    const bool shoved =
+        speed > config_.shove_speed_m_s && state.accel_world.head<2>().norm() > config_.shove_accel_m_s2;
+    if (out || fast || shoved || tip_rate > config_.tip_rate_rad_s) {
       stepping_ = true;
       quiet_s_ = 0.0;
       ++recoveries_;

@@ -67,22 +67,40 @@ TEST(PushRecovery, AStandingTrunkDoesNotStep) {
   EXPECT_EQ(recovery.recoveries(), 0);
 }
 
-TEST(PushRecovery, StepsWhenTheCapturePointLeavesTheFeetOrTheTrunkTipsAndStandsOnceAtRest) {
+TEST(PushRecovery, StepsWhenTheCapturePointLeavesTheFeetOrTheTrunkTipsOrIsShovedAndStandsOnceAtRest) {
   const PushRecoveryConfig config;
-  // sideways at 0.25 m/s the capture point is 0.04 m out from the trunk: inside, 0.06 from the edge
-  for (const auto& [velocity, tip_rate, steps] :
-       {std::tuple{Eigen::Vector3d(0.0, 0.25, 0.0), 0.0, false}, std::tuple{Eigen::Vector3d(0.0, 0.6, 0.0), 0.0, true},
-        std::tuple{Eigen::Vector3d(0.0, 0.0, 0.0), 1.5, true},
-        std::tuple{Eigen::Vector3d(-0.35, 0.0, 0.0), 0.0, true}}) {
+  struct Case {
+    Eigen::Vector3d velocity;
+    double tip_rate_rad_s;
+    Eigen::Vector3d accel;
+    bool steps;
+  };
+  const Eigen::Vector3d still = Eigen::Vector3d::Zero();
+  for (const Case& c : {
+           // sideways at 0.2 m/s the capture point is 0.03 m out from the trunk: inside, 0.07 from the edge
+           Case{{0.0, 0.2, 0.0}, 0.0, still, false},
+           // at 0.6 m/s it is 0.093 m out: within the 0.06 m margin of the edge at 0.1
+           Case{{0.0, 0.6, 0.0}, 0.0, still, true},
+           Case{still, 1.5, still, true},
+           // backward at 0.5 m/s the capture point is well inside (0.077 m behind, the feet at 0.19)
+           // but the speed says a push
+           Case{{-0.5, 0.0, 0.0}, 0.0, still, true},
+           // at 0.35 m/s: a steady push (6 m/s^2) is held on planted feet, a blow (12 m/s^2) is not
+           Case{{-0.35, 0.0, 0.0}, 0.0, {-6.0, 0.0, 0.0}, false},
+           Case{{-0.35, 0.0, 0.0}, 0.0, {-12.0, 0.0, 0.0}, true},
+       }) {
     PushRecovery recovery(config);
     RobotState state = standing_state(0.0);
-    state.velocity_world = velocity;
-    state.omega_world = {tip_rate, 0.0, 0.0};
-    EXPECT_EQ(recovery.update(state, 0.002), steps) << velocity.transpose() << " tip " << tip_rate;
-    if (!steps) continue;
+    state.velocity_world = c.velocity;
+    state.omega_world = {c.tip_rate_rad_s, 0.0, 0.0};
+    state.accel_world = c.accel;
+    EXPECT_EQ(recovery.update(state, 0.002), c.steps)
+        << c.velocity.transpose() << " tip " << c.tip_rate_rad_s << " accel " << c.accel.transpose();
+    if (!c.steps) continue;
     // at rest: it stands again after the hold, not before
     state.velocity_world.setZero();
     state.omega_world.setZero();
+    state.accel_world.setZero();
     const int hold_ticks = static_cast<int>(std::ceil(config.settle_hold_s / 0.002));
     for (int i = 0; i < hold_ticks - 2; ++i) EXPECT_TRUE(recovery.update(state, 0.002));
     for (int i = 0; i < 3; ++i) recovery.update(state, 0.002);
