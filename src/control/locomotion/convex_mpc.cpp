@@ -6,6 +6,8 @@
 #include <limits>
 #include <unsupported/Eigen/MatrixFunctions>
 
+#include "control/locomotion/lone_pair.hpp"
+
 namespace cerebellum {
 namespace {
 
@@ -33,14 +35,6 @@ bool input_is_finite(const MpcInput& input) {
 }
 
 }  // namespace
-
-bool front_or_rear_pair_alone(const std::array<bool, kNumLegs>& contact) {
-  constexpr auto fr = static_cast<std::size_t>(Leg::FR), fl = static_cast<std::size_t>(Leg::FL);
-  constexpr auto rr = static_cast<std::size_t>(Leg::RR), rl = static_cast<std::size_t>(Leg::RL);
-  const bool front = contact[fr] && contact[fl], rear = contact[rr] && contact[rl];
-  const bool front_any = contact[fr] || contact[fl], rear_any = contact[rr] || contact[rl];
-  return (front && !rear_any) || (rear && !front_any);
-}
 
 bool stands_throughout(const std::array<std::array<bool, kNumLegs>, kMpcHorizon>& contact) {
   for (const auto& step : contact) {
@@ -154,7 +148,7 @@ void ConvexMpc::build(const MpcInput& input) {
   for (int k = 0; k < kMpcHorizon; ++k) {
     for (int s = 0; s < 12; ++s) weights[kSrbStates * k + s] = config_.state_weights[s];
     if (input.hold_position) weights[kSrbStates * k + 3] = weights[kSrbStates * k + 4] = config_.stand_position_weight;
-    if (front_or_rear_pair_alone(input.contact[k])) {
+    if (lone_pair(input.contact[k]) != LonePair::None) {
       weights[kSrbStates * k + 2] *= config_.lone_pair_yaw_weight_share;
       weights[kSrbStates * k + 8] *= config_.lone_pair_yaw_weight_share;
     }

@@ -73,8 +73,6 @@ struct MpcOutput {
 
 // every foot on the ground at every step of the horizon
 bool stands_throughout(const std::array<std::array<bool, kNumLegs>, kMpcHorizon>& contact);
-// only the front pair or only the rear pair on the ground
-bool front_or_rear_pair_alone(const std::array<bool, kNumLegs>& contact);
 
 class ConvexMpc {
  public:

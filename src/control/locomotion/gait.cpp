@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "control/locomotion/lone_pair.hpp"
+
 namespace cerebellum {
 namespace {
 
@@ -84,12 +86,13 @@ double first_pair_margin_m(const GaitPattern& pattern, int segment, const std::a
   for (int k = 0; k < pattern.period_segments; ++k) {
     const int s = segment + k;
     if (all_stand(pattern, s)) continue;
-    const bool front = pattern_stance(pattern, fr, s) && pattern_stance(pattern, fl, s);
-    const bool rear = pattern_stance(pattern, rr, s) && pattern_stance(pattern, rl, s);
-    const bool front_any = pattern_stance(pattern, fr, s) || pattern_stance(pattern, fl, s);
-    const bool rear_any = pattern_stance(pattern, rr, s) || pattern_stance(pattern, rl, s);
-    if (front && !rear_any) return std::min(foot_y[fl], -foot_y[fr]);
-    if (rear && !front_any) return std::min(foot_y[rl], -foot_y[rr]);
+    std::array<bool, kNumLegs> stance{};
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) stance[leg] = pattern_stance(pattern, leg, s);
+    switch (lone_pair(stance)) {
+      case LonePair::Front: return std::min(foot_y[fl], -foot_y[fr]);
+      case LonePair::Rear: return std::min(foot_y[rl], -foot_y[rr]);
+      case LonePair::None: return unbounded;
+    }
     return unbounded;
   }
   return unbounded;

@@ -169,18 +169,6 @@ TEST(ConvexMpc, StandsThroughoutOnlyWhenEveryFootIsDownAtEveryStep) {
   EXPECT_FALSE(stands_throughout(late_lift.contact));
 }
 
-TEST(ConvexMpc, OnlyTheFrontPairOrOnlyTheRearPairStandsAlone) {
-  // all sixteen contact sets: exactly FR+FL and RR+RL, each without any other foot
-  int alone = 0;
-  for (int bits = 0; bits < 16; ++bits) {
-    const std::array<bool, kNumLegs> contact{(bits & 1) != 0, (bits & 2) != 0, (bits & 4) != 0, (bits & 8) != 0};
-    const bool expected = bits == 0b0011 || bits == 0b1100;
-    EXPECT_EQ(front_or_rear_pair_alone(contact), expected) << bits;
-    alone += front_or_rear_pair_alone(contact);
-  }
-  EXPECT_EQ(alone, 2);
-}
-
 TEST(ConvexMpc, AFrontPairStandingAloneRollsTheTrunkLessToTurnAtItsShareOfTheYawWeight) {
   // the front pair alone through the horizon, asked to turn at 1 rad/s: its only yaw lever is
   // sideways force at its feet, which also rolls the trunk over them (here a third less at 0.3)
