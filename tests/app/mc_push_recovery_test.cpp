@@ -97,7 +97,7 @@ TEST(McPushRecovery, TheStandWithPushRecoveryCatchesA25NsShoveFromEitherSideAndS
 
 TEST(McPushRecovery, TheStandWithPushRecoveryKeepsItsFeetPlantedUntilASteadyShoveFromTheSideHasToBeStepped) {
   // 50 N for 0.5 s at moments of the push sweep (docs/benchmarks.md) where stepping as soon as the
-  // trunk passed 0.3 m/s fell (five of these eight runs): the trotting pair took the roll over one
+  // trunk passed 0.3 m/s fell (six of these eight runs): the trotting pair took the roll over one
   // foot per side while the force still acted. Four planted feet hold it until 0.45 m/s or the
   // capture point is near their edge
   for (const double side : {1.0, -1.0}) {
