@@ -132,6 +132,15 @@ int sideways_entry_segment(const GaitPattern& pattern, double lateral_velocity_m
   return ((pattern.offsets[toward] % pattern.period_segments) + pattern.period_segments) % pattern.period_segments;
 }
 
+bool stands_on_lone_pairs(const GaitPattern& pattern) {
+  for (int segment = 0; segment < pattern.period_segments; ++segment) {
+    std::array<bool, kNumLegs> stance{};
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) stance[leg] = pattern_stance(pattern, leg, segment);
+    if (lone_pair(stance) != LonePair::None) return true;
+  }
+  return false;
+}
+
 GaitPattern stand_bridge_pattern(int segments) {
   const int period = std::max(segments, 1);
   return make(kStandGaitId, {period, period}, {0, 0, 0, 0}, {0, 0, 0}, {0, 0, 0});

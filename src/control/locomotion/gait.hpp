@@ -38,6 +38,10 @@ bool steps(const GaitPattern& pattern);
 // all feet on the ground for a few segments: the bridge from one stepping gait to another
 GaitPattern stand_bridge_pattern(int segments);
 
+// true for a pattern in which, at some segment, the front or the rear pair stands with no other
+// foot down (the bound): such a gait pitches the trunk from pair to pair
+bool stands_on_lone_pairs(const GaitPattern& pattern);
+
 // the segment at which a pattern's cycle begins, from a stand or a bridge, given each foot's
 // lateral position from the centre of mass (body y, m). A gait in which the front or the rear pair
 // stands alone (the bound) begins at the all-stance segment after which the pair that stands alone

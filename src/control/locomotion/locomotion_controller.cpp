@@ -317,7 +317,8 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
   } else if (ready && config_.gait_bridge_segments > 0 && steps(next) && steps(pending_gait_) &&
              next.id != pending_gait_.id) {
     gait_before_bridge_ = next;
-    next = stand_bridge_pattern(config_.gait_bridge_segments);
+    next = stand_bridge_pattern(stands_on_lone_pairs(next) ? config_.lone_pair_exit_bridge_segments
+                                                           : config_.gait_bridge_segments);
     bridging_ = true;
   } else if (ready) {
     next = pending_gait_;

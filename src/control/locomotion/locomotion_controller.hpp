@@ -50,6 +50,11 @@ struct LocomotionConfig {
   // swing pair would otherwise lift the legs that have to stop it; longer bridges fell more, the
   // feet stand while the body moves on
   int gait_bridge_segments = 1;
+  // ... and this many after a gait that stands on lone pairs (the bound): its cycle ends with the
+  // rear pair landing while the trunk pitches at 3-5 rad/s, and the trot after one segment's bridge
+  // could not stop the swing (in the soak, 3 of 5 falls, 50 of 68 near falls outside the bound).
+  // The bound moves at 0.3 m/s at most, so its feet do not fall behind while they stand
+  int lone_pair_exit_bridge_segments = 3;
   // a trot that leaves a stand (not the bridge) while the body moves sideways faster than this
   // (m/s) begins with the diagonal that catches it (sideways_entry_segment). After a bridge the
   // trot's own alternation goes on: choosing there too fell more often in the soak

@@ -146,6 +146,29 @@ TEST(Gait, GaitsWithoutALonePairBeginAtTheirCycleStartWhereverTheFeetAre) {
   EXPECT_EQ(entry_segment(variable_trot_pattern(1.0), {0.0, 0.0, 0.0, 0.0}), 0);
 }
 
+TEST(Gait, OnlyAGaitInWhichAFrontOrRearPairStandsAloneStandsOnLonePairs) {
+  EXPECT_TRUE(stands_on_lone_pairs(*gait_pattern(7)));  // the bound
+  for (int id : {27, 3, 10, 4, 2, 1, 31}) EXPECT_FALSE(stands_on_lone_pairs(*gait_pattern(id))) << id;
+  EXPECT_FALSE(stands_on_lone_pairs(variable_trot_pattern(1.0)));
+  EXPECT_FALSE(stands_on_lone_pairs(stand_bridge_pattern(3)));
+  // hand-made cycles of 8 segments (FR, FL, RR, RL): a trot whose diagonals meet in segment 3,
+  // where only the front pair stands; a walk, one foot up at a time, never; each pair alone in
+  // turn, with a flight
+  GaitPattern pattern = *gait_pattern(7);
+  pattern.period_segments = 8;
+  pattern.offsets = {0, 3, 4, 0};
+  pattern.stance = {4, 5, 4, 3};
+  EXPECT_TRUE(stands_on_lone_pairs(pattern));
+  pattern.stance = {4, 5, 4, 4};  // the rear left foot stays into segment 3: three feet down there
+  EXPECT_FALSE(stands_on_lone_pairs(pattern));
+  pattern.offsets = {0, 2, 4, 6};
+  pattern.stance = {6, 6, 6, 6};
+  EXPECT_FALSE(stands_on_lone_pairs(pattern));
+  pattern.offsets = {4, 4, 0, 0};
+  pattern.stance = {2, 2, 4, 4};
+  EXPECT_TRUE(stands_on_lone_pairs(pattern));
+}
+
 TEST(Gait, ATrotLeavingAStandSidewaysBeginsWithTheDiagonalWhoseRearFootIsOnTheSideTheBodyMovesToward) {
   const std::array<bool, kNumLegs> rear_left_diagonal{true, false, false, true};   // FR, RL stand
   const std::array<bool, kNumLegs> rear_right_diagonal{false, true, true, false};  // FL, RR stand
