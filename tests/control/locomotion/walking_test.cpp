@@ -105,8 +105,8 @@ TEST(Walking, AllFeetStandBetweenTwoGaitsLongerAfterTheBoundButNotBetweenTrotFre
     for (std::size_t leg = 0; leg < kNumLegs; ++leg) all_stance_in_bridge &= scheduler.leg_phase(leg).stance;
   };
   sim.run_until(kStart + 4.0, record);
-  const LocomotionConfig config;
-  const int ticks_per_segment = 15;  // 30 ms at 500 Hz
+  const LocomotionConfig config;  // the fixture's walker runs on the defaults
+  const int ticks_per_segment = config.ticks_per_segment;
   ASSERT_EQ(runs.size(), 3u);
   EXPECT_EQ(runs[0].first, 7);
   EXPECT_EQ(runs[1].first, 1);
