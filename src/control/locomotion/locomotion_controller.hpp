@@ -53,7 +53,8 @@ struct LocomotionConfig {
   // ... and this many after a gait that stands on lone pairs (the bound): its cycle ends with the
   // rear pair landing while the trunk pitches at 3-5 rad/s, and the trot after one segment's bridge
   // could not stop the swing (in the soak, 3 of 5 falls, 50 of 68 near falls outside the bound).
-  // The bound moves at 0.3 m/s at most, so its feet do not fall behind while they stand
+  // The bound moves at 0.3 m/s at most, so its feet fall little behind while they stand; the
+  // trunk is left up to 0.2 rad nose-up, which the slow trot does not always carry (benchmarks.md)
   int lone_pair_exit_bridge_segments = 3;
   // a trot that leaves a stand (not the bridge) while the body moves sideways faster than this
   // (m/s) begins with the diagonal that catches it (sideways_entry_segment). After a bridge the
