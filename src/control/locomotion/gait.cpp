@@ -69,6 +69,13 @@ bool pattern_stance(const GaitPattern& pattern, std::size_t leg, int segment) {
   return ((segment - pattern.offsets[leg]) % n + n) % n < pattern.stance[leg];
 }
 
+// which legs stand in this segment of the pattern's cycle
+std::array<bool, kNumLegs> pattern_stances(const GaitPattern& pattern, int segment) {
+  std::array<bool, kNumLegs> stance{};
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) stance[leg] = pattern_stance(pattern, leg, segment);
+  return stance;
+}
+
 bool all_stand(const GaitPattern& pattern, int segment) {
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     if (!pattern_stance(pattern, leg, segment)) return false;
@@ -86,9 +93,7 @@ double first_pair_margin_m(const GaitPattern& pattern, int segment, const std::a
   for (int k = 0; k < pattern.period_segments; ++k) {
     const int s = segment + k;
     if (all_stand(pattern, s)) continue;
-    std::array<bool, kNumLegs> stance{};
-    for (std::size_t leg = 0; leg < kNumLegs; ++leg) stance[leg] = pattern_stance(pattern, leg, s);
-    switch (lone_pair(stance)) {
+    switch (lone_pair(pattern_stances(pattern, s))) {
       case LonePair::Front: return std::min(foot_y[fl], -foot_y[fr]);
       case LonePair::Rear: return std::min(foot_y[rl], -foot_y[rr]);
       case LonePair::None: return unbounded;
@@ -134,9 +139,7 @@ int sideways_entry_segment(const GaitPattern& pattern, double lateral_velocity_m
 
 bool stands_on_lone_pairs(const GaitPattern& pattern) {
   for (int segment = 0; segment < pattern.period_segments; ++segment) {
-    std::array<bool, kNumLegs> stance{};
-    for (std::size_t leg = 0; leg < kNumLegs; ++leg) stance[leg] = pattern_stance(pattern, leg, segment);
-    if (lone_pair(stance) != LonePair::None) return true;
+    if (lone_pair(pattern_stances(pattern, segment)) != LonePair::None) return true;
   }
   return false;
 }
