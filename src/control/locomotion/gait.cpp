@@ -9,6 +9,13 @@
 namespace cerebellum {
 namespace {
 
+constexpr auto kFr = static_cast<std::size_t>(Leg::FR), kFl = static_cast<std::size_t>(Leg::FL);
+constexpr auto kRr = static_cast<std::size_t>(Leg::RR), kRl = static_cast<std::size_t>(Leg::RL);
+
+// a start other than the cycle's own must gain this much (m): from a stand, feet symmetric, the
+// cycle begins at 0
+constexpr double kEntryPreferenceM = 0.01;
+
 GaitPattern make(int id, GaitCycle cycle, std::array<int, 4> offsets, std::array<double, 3> vmin,
                  std::array<double, 3> vmax) {
   GaitPattern p;
@@ -83,19 +90,36 @@ bool all_stand(const GaitPattern& pattern, int segment) {
   return true;
 }
 
+// a trot: each diagonal shares its timing, the two diagonals take turns
+bool is_trot(const GaitPattern& pattern) {
+  return pattern.offsets[kFr] == pattern.offsets[kRl] && pattern.offsets[kFl] == pattern.offsets[kRr] &&
+         pattern.offsets[kFr] != pattern.offsets[kFl] && pattern.stance[kFr] == pattern.stance[kRl] &&
+         pattern.stance[kFl] == pattern.stance[kRr] && steps(pattern);
+}
+
+// the segment of the cycle in which the leg's stance begins
+int stance_start_segment(const GaitPattern& pattern, std::size_t leg) {
+  return ((pattern.offsets[leg] % pattern.period_segments) + pattern.period_segments) % pattern.period_segments;
+}
+
+// distance from the origin to the line through a and b (m); to a itself when they coincide
+double distance_to_line_m(const Eigen::Vector2d& a, const Eigen::Vector2d& b) {
+  const double length = (b - a).norm();
+  if (length < 1e-9) return a.norm();
+  return std::abs(a.x() * b.y() - a.y() * b.x()) / length;
+}
+
 // how far the centre lies inside the feet that stand alone first after `segment` (m): the smaller
 // lateral distance to the pair's left and right foot; unbounded when no front or rear pair stands
 // alone then (a trot's diagonal, a hop's flight)
 double first_pair_margin_m(const GaitPattern& pattern, int segment, const std::array<double, kNumLegs>& foot_y) {
-  constexpr auto fr = static_cast<std::size_t>(Leg::FR), fl = static_cast<std::size_t>(Leg::FL);
-  constexpr auto rr = static_cast<std::size_t>(Leg::RR), rl = static_cast<std::size_t>(Leg::RL);
   const double unbounded = std::numeric_limits<double>::infinity();
   for (int k = 0; k < pattern.period_segments; ++k) {
     const int s = segment + k;
     if (all_stand(pattern, s)) continue;
     switch (lone_pair(pattern_stances(pattern, s))) {
-      case LonePair::Front: return std::min(foot_y[fl], -foot_y[fr]);
-      case LonePair::Rear: return std::min(foot_y[rl], -foot_y[rr]);
+      case LonePair::Front: return std::min(foot_y[kFl], -foot_y[kFr]);
+      case LonePair::Rear: return std::min(foot_y[kRl], -foot_y[kRr]);
       case LonePair::None: return unbounded;
     }
     return unbounded;
@@ -106,15 +130,13 @@ double first_pair_margin_m(const GaitPattern& pattern, int segment, const std::a
 }  // namespace
 
 int entry_segment(const GaitPattern& pattern, const std::array<double, kNumLegs>& foot_y_from_com_m) {
-  // a better start must gain this much: from a stand (feet symmetric) the cycle begins at 0
-  constexpr double kPreferenceM = 0.01;
   int best = 0;
   double best_margin = first_pair_margin_m(pattern, 0, foot_y_from_com_m);
   for (int s = 1; s < pattern.period_segments; ++s) {
     // the first segment of a run in which every foot stands
     if (!all_stand(pattern, s) || all_stand(pattern, s - 1)) continue;
     const double margin = first_pair_margin_m(pattern, s, foot_y_from_com_m);
-    if (margin > best_margin + kPreferenceM) {
+    if (margin > best_margin + kEntryPreferenceM) {
       best = s;
       best_margin = margin;
     }
@@ -123,18 +145,19 @@ int entry_segment(const GaitPattern& pattern, const std::array<double, kNumLegs>
 }
 
 int sideways_entry_segment(const GaitPattern& pattern, double lateral_velocity_m_s, double min_speed_m_s) {
-  if (std::abs(lateral_velocity_m_s) < min_speed_m_s) return 0;
-  constexpr auto fr = static_cast<std::size_t>(Leg::FR), fl = static_cast<std::size_t>(Leg::FL);
-  constexpr auto rr = static_cast<std::size_t>(Leg::RR), rl = static_cast<std::size_t>(Leg::RL);
+  if (std::abs(lateral_velocity_m_s) < min_speed_m_s || !is_trot(pattern)) return 0;
   // the rear foot on the side the body moves toward (body y: left is +)
-  const std::size_t toward = lateral_velocity_m_s > 0.0 ? rl : rr;
-  // a trot: each diagonal shares its timing, the two diagonals take turns
-  const bool trot = pattern.offsets[fr] == pattern.offsets[rl] && pattern.offsets[fl] == pattern.offsets[rr] &&
-                    pattern.offsets[fr] != pattern.offsets[fl] && pattern.stance[fr] == pattern.stance[rl] &&
-                    pattern.stance[fl] == pattern.stance[rr] && steps(pattern);
-  if (!trot) return 0;
-  // the cycle begins where that foot's stance begins
-  return ((pattern.offsets[toward] % pattern.period_segments) + pattern.period_segments) % pattern.period_segments;
+  return stance_start_segment(pattern, lateral_velocity_m_s > 0.0 ? kRl : kRr);
+}
+
+int diagonal_entry_segment(const GaitPattern& pattern,
+                           const std::array<Eigen::Vector2d, kNumLegs>& foot_xy_from_com_m) {
+  if (!is_trot(pattern)) return 0;
+  const double fr_rl = distance_to_line_m(foot_xy_from_com_m[kFr], foot_xy_from_com_m[kRl]);
+  const double fl_rr = distance_to_line_m(foot_xy_from_com_m[kFl], foot_xy_from_com_m[kRr]);
+  if (fl_rr + kEntryPreferenceM < fr_rl) return stance_start_segment(pattern, kFl);
+  if (fr_rl + kEntryPreferenceM < fl_rr) return stance_start_segment(pattern, kFr);
+  return 0;
 }
 
 bool stands_on_lone_pairs(const GaitPattern& pattern) {

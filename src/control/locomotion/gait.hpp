@@ -6,6 +6,8 @@
 #include <memory>
 #include <optional>
 
+#include <Eigen/Core>
+
 #include "control/locomotion/contact_sequence.hpp"
 #include "control/locomotion/gait_table.hpp"
 #include "core/joint_layout.hpp"
@@ -57,6 +59,14 @@ int entry_segment(const GaitPattern& pattern, const std::array<double, kNumLegs>
 // way the body moved; gait 1 then caught 25 N s from one side and fell from the other). Below
 // min_speed_m_s, or for a gait that is no trot, the cycle begins at 0
 int sideways_entry_segment(const GaitPattern& pattern, double lateral_velocity_m_s, double min_speed_m_s);
+
+// the segment at which a trot begins after the bridge out of a bound, given each foot's position
+// from the centre of mass (body x, y; m): the diagonal whose support line passes more than 1 cm
+// nearer the centre stands first. The bound leaves its feet wherever its last leaps put them, and
+// the trunk pitched; a slow trot that began on its own first diagonal, whose line passed 10 cm
+// beside the centre, rolled over it (benchmarks.md). For a gait that is no trot, or when neither
+// diagonal is nearer, 0
+int diagonal_entry_segment(const GaitPattern& pattern, const std::array<Eigen::Vector2d, kNumLegs>& foot_xy_from_com_m);
 
 // where each leg is in the cycle at one instant
 struct LegPhase {

@@ -57,8 +57,9 @@ struct LocomotionConfig {
   // trunk is left up to 0.2 rad nose-up, which the slow trot does not always carry (benchmarks.md)
   int lone_pair_exit_bridge_segments = 3;
   // a trot that leaves a stand (not the bridge) while the body moves sideways faster than this
-  // (m/s) begins with the diagonal that catches it (sideways_entry_segment). After a bridge the
-  // trot's own alternation goes on: choosing there too fell more often in the soak
+  // (m/s) begins with the diagonal that catches it (sideways_entry_segment). After a bridge it
+  // does not: choosing there by sideways speed fell more often in the soak (out of the bound the
+  // diagonal nearer the centre of mass stands first, diagonal_entry_segment)
   double sideways_entry_speed_m_s = 0.1;
   // |v| |yaw rate| above this (m/s^2) is clamped by lowering the yaw rate: friction 0.4 allows at
   // most 3.9 m/s^2 with no margin for the gait's own forces. At 2.0 a fast turning trot slid

@@ -186,6 +186,37 @@ TEST(Gait, ATrotLeavingAStandSidewaysBeginsWithTheDiagonalWhoseRearFootIsOnTheSi
   EXPECT_EQ(first_lone_stance(variable, sideways_entry_segment(variable, -0.5, 0.1)), rear_right_diagonal);
 }
 
+TEST(Gait, ATrotAfterABoundBeginsWithTheDiagonalWhoseLinePassesNearerTheCentre) {
+  const std::array<bool, kNumLegs> rear_left_diagonal{true, false, false, true};   // FR, RL stand
+  const std::array<bool, kNumLegs> rear_right_diagonal{false, true, true, false};  // FL, RR stand
+  // feet (x, y from the centre; FR, FL, RR, RL) at the corners of a 0.4 x 0.2 m rectangle: both
+  // diagonals pass through the centre
+  std::array<Eigen::Vector2d, kNumLegs> feet{{{0.2, -0.1}, {0.2, 0.1}, {-0.2, -0.1}, {-0.2, 0.1}}};
+  // the rear right foot 6 cm outward: the FL-RR line passes 0.2 * 0.06 / |(-0.4, -0.26)| = 2.5 cm
+  // from the centre, the FR-RL line still through it
+  feet[2] = {-0.2, -0.16};
+  for (int id : {27, 3, 10, 26}) {
+    const GaitPattern trot = id == 26 ? variable_trot_pattern(0.5) : *gait_pattern(id);
+    EXPECT_EQ(first_lone_stance(trot, diagonal_entry_segment(trot, feet)), rear_left_diagonal) << id;
+  }
+  // the rear left foot 6 cm outward instead: the mirror image
+  feet[2] = {-0.2, -0.1};
+  feet[3] = {-0.2, 0.16};
+  for (int id : {27, 3, 10}) {
+    const GaitPattern trot = *gait_pattern(id);
+    EXPECT_EQ(first_lone_stance(trot, diagonal_entry_segment(trot, feet)), rear_right_diagonal) << id;
+  }
+  // 4 cm outward: the line passes 0.2 * 0.04 / |(-0.4, 0.24)| = 1.7 cm away; 2 cm: 0.9 cm, within
+  // the 1 cm preference, so the cycle begins at its start
+  feet[3] = {-0.2, 0.14};
+  EXPECT_EQ(first_lone_stance(*gait_pattern(27), diagonal_entry_segment(*gait_pattern(27), feet)), rear_right_diagonal);
+  feet[3] = {-0.2, 0.12};
+  EXPECT_EQ(diagonal_entry_segment(*gait_pattern(27), feet), 0);
+  // a gait that is no trot begins at its cycle start
+  feet[3] = {-0.2, 0.16};
+  for (int id : {7, 2, kStandGaitId}) EXPECT_EQ(diagonal_entry_segment(*gait_pattern(id), feet), 0) << id;
+}
+
 TEST(Gait, ASlowBodyOrAGaitThatIsNoTrotBeginsAtItsCycleStart) {
   EXPECT_EQ(sideways_entry_segment(*gait_pattern(10), -0.05, 0.1), 0);
   for (int id : {7, 2, kStandGaitId}) EXPECT_EQ(sideways_entry_segment(*gait_pattern(id), -0.5, 0.1), 0) << id;

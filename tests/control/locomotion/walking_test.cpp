@@ -173,6 +173,37 @@ TEST(Walking, AFastTrotAfterAOneCycleBoundStaysUpright) {
   }
 }
 
+TEST(Walking, ASlowTrotAfterABoundBeginsOnTheDiagonalNearerTheCentreAndStaysUpright) {
+  // the bound leaves its feet wherever the last leap put them; the slow trot that began on its own
+  // first diagonal whatever the feet rolled over it when that line passed beside the centre.
+  // Commands of the soak's falls (seeds 991 and 1011), bounds of one to four cycles
+  struct Case {
+    Eigen::Vector3d bound, trot;
+    double bound_s;
+  };
+  const Case cases[] = {{{0.17, -0.24, 0.15}, {0.54, 0.11, 1.30}, 0.4},
+                        {{0.24, 0.12, 0.66}, {0.60, 0.16, 1.06}, 0.4},
+                        {{0.24, 0.12, 0.66}, {0.60, 0.16, 1.06}, 1.6},
+                        {{0.24, 0.12, 0.66}, {0.60, 0.16, 1.06}, 2.2}};
+  for (const Case& c : cases) {
+    WalkingSim sim;
+    sim.controller.set(walk_command(26, 0.03, -0.01, -0.42));
+    sim.run_until(kStart + 2.0);
+    sim.controller.set(walk_command(7, c.bound.x(), c.bound.y(), c.bound.z()));
+    sim.run_until(kStart + 2.0 + c.bound_s);
+    sim.controller.set(walk_command(kSlowTrotGaitId, c.trot.x(), c.trot.y(), c.trot.z()));
+    double worst_tilt = 0.0;
+    bool upright = true;
+    sim.run_until(kStart + 4.0 + c.bound_s, [&](const CycleRecord&) {
+      worst_tilt = std::max(worst_tilt, sim.tilt_truth());
+      upright &= sim.upright();
+    });
+    EXPECT_TRUE(upright) << "after " << c.bound_s << " s of " << c.bound.transpose();
+    EXPECT_LT(worst_tilt, 0.4) << "after " << c.bound_s << " s of " << c.bound.transpose();
+    EXPECT_EQ(sim.controller.walker().scheduler().pattern().id, kSlowTrotGaitId);
+  }
+}
+
 TEST(Walking, ASlowGaitTakesOverOnlyOnceTheBodyIsWithinItsLimits) {
   // medium trot at 1.2 m/s, then the slow trot (0.6 m/s at most): its long stance cannot carry
   // 1.2 m/s, so the medium trot slows the body down first
