@@ -140,6 +140,28 @@ TEST(Walking, AllFeetStandBetweenTwoGaitsLongerAfterTheBoundButNotBetweenTrotFre
   EXPECT_TRUE(sim.upright());
 }
 
+struct BoundExit {
+  double worst_tilt_rad = 0.0;
+  bool upright = true;
+};
+
+// the soak's bound exits: a slow turning variable trot, a bound at `bound` for bound_s, then
+// `trot_gait` at `trot`, watched for 2 s on the simulator's truth
+BoundExit bound_then_trot(WalkingSim& sim, const Eigen::Vector3d& bound, double bound_s, int trot_gait,
+                          const Eigen::Vector3d& trot) {
+  sim.controller.set(walk_command(26, 0.03, -0.01, -0.42));
+  sim.run_until(kStart + 2.0);
+  sim.controller.set(walk_command(7, bound.x(), bound.y(), bound.z()));
+  sim.run_until(kStart + 2.0 + bound_s);
+  sim.controller.set(walk_command(trot_gait, trot.x(), trot.y(), trot.z()));
+  BoundExit exit;
+  sim.run_until(kStart + 4.0 + bound_s, [&](const CycleRecord&) {
+    exit.worst_tilt_rad = std::max(exit.worst_tilt_rad, sim.tilt_truth());
+    exit.upright &= sim.upright();
+  });
+  return exit;
+}
+
 TEST(Walking, AFastTrotAfterAOneCycleBoundStaysUpright) {
   // the bound's cycle ends with the rear pair landing while the trunk pitches at 3-5 rad/s; a trot
   // after a one-segment bridge could not stop that swing, and short bounds followed by a fast trot
@@ -156,19 +178,9 @@ TEST(Walking, AFastTrotAfterAOneCycleBoundStaysUpright) {
                         {{0.10, 0.29, -1.39}, {1.02, -0.19, -2.19}, 3, 0.55}};
   for (const Case& c : cases) {
     WalkingSim sim;
-    sim.controller.set(walk_command(26, 0.03, -0.01, -0.42));
-    sim.run_until(kStart + 2.0);
-    sim.controller.set(walk_command(7, c.bound.x(), c.bound.y(), c.bound.z()));
-    sim.run_until(kStart + 2.0 + c.bound_s);
-    sim.controller.set(walk_command(c.trot_gait, c.trot.x(), c.trot.y(), c.trot.z()));
-    double worst_tilt = 0.0;
-    bool upright = true;
-    sim.run_until(kStart + 4.0 + c.bound_s, [&](const CycleRecord&) {
-      worst_tilt = std::max(worst_tilt, sim.tilt_truth());
-      upright &= sim.upright();
-    });
-    EXPECT_TRUE(upright) << c.trot_gait << " after " << c.bound_s << " s";
-    EXPECT_LT(worst_tilt, 0.45) << c.trot_gait << " after " << c.bound_s << " s";
+    const BoundExit exit = bound_then_trot(sim, c.bound, c.bound_s, c.trot_gait, c.trot);
+    EXPECT_TRUE(exit.upright) << c.trot_gait << " after " << c.bound_s << " s";
+    EXPECT_LT(exit.worst_tilt_rad, 0.45) << c.trot_gait << " after " << c.bound_s << " s";
     EXPECT_EQ(sim.controller.walker().scheduler().pattern().id, c.trot_gait);
   }
 }
@@ -187,19 +199,9 @@ TEST(Walking, ASlowTrotAfterABoundBeginsOnTheDiagonalNearerTheCentreAndStaysUpri
                         {{0.24, 0.12, 0.66}, {0.60, 0.16, 1.06}, 2.2}};
   for (const Case& c : cases) {
     WalkingSim sim;
-    sim.controller.set(walk_command(26, 0.03, -0.01, -0.42));
-    sim.run_until(kStart + 2.0);
-    sim.controller.set(walk_command(7, c.bound.x(), c.bound.y(), c.bound.z()));
-    sim.run_until(kStart + 2.0 + c.bound_s);
-    sim.controller.set(walk_command(kSlowTrotGaitId, c.trot.x(), c.trot.y(), c.trot.z()));
-    double worst_tilt = 0.0;
-    bool upright = true;
-    sim.run_until(kStart + 4.0 + c.bound_s, [&](const CycleRecord&) {
-      worst_tilt = std::max(worst_tilt, sim.tilt_truth());
-      upright &= sim.upright();
-    });
-    EXPECT_TRUE(upright) << "after " << c.bound_s << " s of " << c.bound.transpose();
-    EXPECT_LT(worst_tilt, 0.4) << "after " << c.bound_s << " s of " << c.bound.transpose();
+    const BoundExit exit = bound_then_trot(sim, c.bound, c.bound_s, kSlowTrotGaitId, c.trot);
+    EXPECT_TRUE(exit.upright) << "after " << c.bound_s << " s of " << c.bound.transpose();
+    EXPECT_LT(exit.worst_tilt_rad, 0.4) << "after " << c.bound_s << " s of " << c.bound.transpose();
     EXPECT_EQ(sim.controller.walker().scheduler().pattern().id, kSlowTrotGaitId);
   }
 }
