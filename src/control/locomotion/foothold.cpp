@@ -8,7 +8,8 @@
 namespace cerebellum {
 
 Eigen::Vector3d raibert_foothold(const Eigen::Vector3d& hip_world, const Eigen::Vector3d& velocity,
-                                 const Eigen::Vector3d& velocity_desired, double yaw_rate_desired, double yaw,
+                                 const Eigen::Vector3d& velocity_desired,
+                                 const Eigen::Vector3d& velocity_desired_before, double yaw_rate_desired, double yaw,
                                  double stance_duration_s, double body_height_m, const FootholdConfig& config) {
   Eigen::Vector2d offset = Eigen::Vector2d::Zero();
   for (int axis = 0; axis < 2; ++axis) {
@@ -24,7 +25,8 @@ Eigen::Vector3d raibert_foothold(const Eigen::Vector3d& hip_world, const Eigen::
   // clamp in the heading frame
   const Eigen::Rotation2Dd heading(yaw);
   Eigen::Vector2d local = heading.inverse() * offset;
-  const bool pushed = (velocity - velocity_desired).head<2>().norm() > config.push_velocity_error_m_s;
+  const bool pushed = (velocity - velocity_desired).head<2>().norm() > config.push_velocity_error_m_s &&
+                      (velocity - velocity_desired_before).head<2>().norm() > config.push_velocity_error_m_s;
   const double forward = pushed ? config.max_offset_push_m : config.max_offset_forward_m;
   const double lateral = pushed ? config.max_offset_push_m : config.max_offset_lateral_m;
   local.x() = std::clamp(local.x(), -forward, forward);

@@ -18,9 +18,14 @@ struct FootholdConfig {
 
 // hip_world: the hip's position under the body at touchdown (world, on the ground plane);
 // velocities in the world frame; heading (yaw) of the body; stance duration in seconds; body
-// height for the centrifugal term
+// height for the centrifugal term. velocity_desired_before: the desired velocity of about a second
+// earlier (low-passed). The footholds reach as for a push only when the body is that far from both:
+// a push moves the body away from a steady command, a command change moves the command away from
+// the body (a slow trot taking over a body still backing at 0.7 m/s, commanded forward, placed its
+// front foot under the trunk's centre and rolled over, soak seed 1380)
 Eigen::Vector3d raibert_foothold(const Eigen::Vector3d& hip_world, const Eigen::Vector3d& velocity,
-                                 const Eigen::Vector3d& velocity_desired, double yaw_rate_desired, double yaw,
+                                 const Eigen::Vector3d& velocity_desired,
+                                 const Eigen::Vector3d& velocity_desired_before, double yaw_rate_desired, double yaw,
                                  double stance_duration_s, double body_height_m, const FootholdConfig& config);
 
 }  // namespace cerebellum

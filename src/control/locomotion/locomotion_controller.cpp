@@ -44,6 +44,7 @@ void LocomotionController::reset(const RobotState& state) {
   gait_change_pending_ = false;
   bridging_ = false;
   velocity_.setZero();
+  velocity_before_.setZero();
   yaw_des_ = state.rpy.z();
   position_des_ = state.position_world.head<2>();
   height_correction_m_ = 0.0;
@@ -109,6 +110,8 @@ void LocomotionController::ramp_velocity() {
   velocity_.x() = approach(velocity_.x(), goal.x(), dv);
   velocity_.y() = approach(velocity_.y(), goal.y(), dv);
   velocity_.z() = approach(velocity_.z(), goal.z(), config_.max_yaw_accel_rad_s2 * config_.tick_s);
+  velocity_before_ +=
+      (velocity_ - velocity_before_) * std::min(1.0, config_.tick_s / config_.push_reference_time_constant_s);
 }
 
 Eigen::Vector3d LocomotionController::hip_on_ground_world(std::size_t leg, const RobotState& state, double ahead_s,
@@ -238,11 +241,13 @@ Eigen::Vector3d LocomotionController::foothold_world(std::size_t leg, const LegP
   // the hip where the body will be at touchdown, turned on by half the stance so that the
   // foot is under the hip in the middle of its stance
   const Eigen::Vector3d hip = hip_on_ground_world(leg, state, remaining_s, remaining_s + 0.5 * phase.stance_duration_s);
-  const Eigen::Vector3d velocity_des_world =
-      yaw_rotation(state.rpy.z()) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
+  const Eigen::Matrix3d heading = yaw_rotation(state.rpy.z());
+  const Eigen::Vector3d velocity_des_world = heading * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
+  const Eigen::Vector3d velocity_before_world =
+      heading * Eigen::Vector3d(velocity_before_.x(), velocity_before_.y(), 0.0);
   Eigen::Vector3d foothold =
-      raibert_foothold(hip, state.velocity_world, velocity_des_world, velocity_.z(), state.rpy.z(),
-                       phase.stance_duration_s, target_.height_m, config_.foothold);
+      raibert_foothold(hip, state.velocity_world, velocity_des_world, velocity_before_world, velocity_.z(),
+                       state.rpy.z(), phase.stance_duration_s, target_.height_m, config_.foothold);
   foothold.z() += robot::kFootRadius;  // foot centre above the ground
   return foothold;
 }

@@ -39,6 +39,9 @@ struct LocomotionConfig {
   // reversed at speed) fell in the soak twice as often
   double max_accel_m_s2 = 1.2;
   double max_yaw_accel_rad_s2 = 3.0;
+  // time constant of the ramped command low-passed (s): the command a push is judged against
+  // besides the current one (raibert_foothold)
+  double push_reference_time_constant_s = 1.0;
   // the position reference runs at most this far from the trunk (m)
   double max_position_lag_m = 0.1;
   // a new gait starts once the ramped velocity is this close to its limits (m/s, rad/s)
@@ -164,7 +167,8 @@ class LocomotionController {
   bool gait_change_pending_ = false;
   bool bridging_ = false;  // the scheduler runs the stand bridge between two gaits
   GaitPattern gait_before_bridge_;
-  Eigen::Vector3d velocity_{0, 0, 0};  // ramped command
+  Eigen::Vector3d velocity_{0, 0, 0};         // ramped command
+  Eigen::Vector3d velocity_before_{0, 0, 0};  // the ramped command low-passed
   double yaw_des_ = 0.0;
   Eigen::Vector2d position_des_{0, 0};  // world x, y
   double height_correction_m_ = 0.0;

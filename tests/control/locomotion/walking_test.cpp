@@ -206,6 +206,36 @@ TEST(Walking, ASlowTrotAfterABoundBeginsOnTheDiagonalNearerTheCentreAndStaysUpri
   }
 }
 
+TEST(Walking, ASlowTrotTakingOverABackingBodyDoesNotStepAsForAPushAndStaysUpright) {
+  // the flying trot backing and sliding right, then the slow trot asked to walk forward: the body
+  // still backs at 0.7 m/s when it takes over, 0.8 m/s from the new command. Read as a push, that
+  // let the front feet land under the trunk's centre and it rolled over (the soak's fall on seed
+  // 1380, whose commands these are; seed 1129's last)
+  struct Case {
+    Eigen::Vector3d back, next;
+    double back_s;
+  };
+  const Case cases[] = {{{-0.88, -0.54, 2.41}, {0.13, 0.14, 0.11}, 1.5},
+                        {{-0.88, -0.54, 2.41}, {0.13, 0.14, 0.11}, 2.3},
+                        {{-0.88, -0.54, 2.41}, {0.13, 0.14, 0.11}, 3.0},
+                        {{-0.68, -0.15, -1.03}, {-0.47, 0.18, -1.29}, 2.0}};
+  for (const Case& c : cases) {
+    WalkingSim sim;
+    sim.controller.set(walk_command(kFlyingTrotGaitId, c.back.x(), c.back.y(), c.back.z()));
+    sim.run_until(kStart + c.back_s);
+    sim.controller.set(walk_command(kSlowTrotGaitId, c.next.x(), c.next.y(), c.next.z()));
+    double worst_tilt = 0.0;
+    bool upright = true;
+    sim.run_until(kStart + c.back_s + 3.0, [&](const CycleRecord&) {
+      worst_tilt = std::max(worst_tilt, sim.tilt_truth());
+      upright &= sim.upright();
+    });
+    EXPECT_TRUE(upright) << "after " << c.back_s << " s of " << c.back.transpose();
+    EXPECT_LT(worst_tilt, 0.4) << "after " << c.back_s << " s of " << c.back.transpose();
+    EXPECT_EQ(sim.controller.walker().scheduler().pattern().id, kSlowTrotGaitId);
+  }
+}
+
 TEST(Walking, ASlowGaitTakesOverOnlyOnceTheBodyIsWithinItsLimits) {
   // medium trot at 1.2 m/s, then the slow trot (0.6 m/s at most): its long stance cannot carry
   // 1.2 m/s, so the medium trot slows the body down first
