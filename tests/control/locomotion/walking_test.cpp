@@ -140,26 +140,31 @@ TEST(Walking, AllFeetStandBetweenTwoGaitsLongerAfterTheBoundButNotBetweenTrotFre
   EXPECT_TRUE(sim.upright());
 }
 
-struct BoundExit {
+// the worst tilt and whether the trunk stayed up, on the simulator's truth, while running to t_s
+struct TiltWatch {
   double worst_tilt_rad = 0.0;
   bool upright = true;
 };
 
+TiltWatch watch_until(WalkingSim& sim, double t_s) {
+  TiltWatch watch;
+  sim.run_until(t_s, [&](const CycleRecord&) {
+    watch.worst_tilt_rad = std::max(watch.worst_tilt_rad, sim.tilt_truth());
+    watch.upright &= sim.upright();
+  });
+  return watch;
+}
+
 // the soak's bound exits: a slow turning variable trot, a bound at `bound` for bound_s, then
-// `trot_gait` at `trot`, watched for 2 s on the simulator's truth
-BoundExit bound_then_trot(WalkingSim& sim, const Eigen::Vector3d& bound, double bound_s, int trot_gait,
+// `trot_gait` at `trot`, watched for 2 s
+TiltWatch bound_then_trot(WalkingSim& sim, const Eigen::Vector3d& bound, double bound_s, int trot_gait,
                           const Eigen::Vector3d& trot) {
   sim.controller.set(walk_command(26, 0.03, -0.01, -0.42));
   sim.run_until(kStart + 2.0);
   sim.controller.set(walk_command(7, bound.x(), bound.y(), bound.z()));
   sim.run_until(kStart + 2.0 + bound_s);
   sim.controller.set(walk_command(trot_gait, trot.x(), trot.y(), trot.z()));
-  BoundExit exit;
-  sim.run_until(kStart + 4.0 + bound_s, [&](const CycleRecord&) {
-    exit.worst_tilt_rad = std::max(exit.worst_tilt_rad, sim.tilt_truth());
-    exit.upright &= sim.upright();
-  });
-  return exit;
+  return watch_until(sim, kStart + 4.0 + bound_s);
 }
 
 TEST(Walking, AFastTrotAfterAOneCycleBoundStaysUpright) {
@@ -178,7 +183,7 @@ TEST(Walking, AFastTrotAfterAOneCycleBoundStaysUpright) {
                         {{0.10, 0.29, -1.39}, {1.02, -0.19, -2.19}, 3, 0.55}};
   for (const Case& c : cases) {
     WalkingSim sim;
-    const BoundExit exit = bound_then_trot(sim, c.bound, c.bound_s, c.trot_gait, c.trot);
+    const TiltWatch exit = bound_then_trot(sim, c.bound, c.bound_s, c.trot_gait, c.trot);
     EXPECT_TRUE(exit.upright) << c.trot_gait << " after " << c.bound_s << " s";
     EXPECT_LT(exit.worst_tilt_rad, 0.45) << c.trot_gait << " after " << c.bound_s << " s";
     EXPECT_EQ(sim.controller.walker().scheduler().pattern().id, c.trot_gait);
@@ -199,7 +204,7 @@ TEST(Walking, ASlowTrotAfterABoundBeginsOnTheDiagonalNearerTheCentreAndStaysUpri
                         {{0.24, 0.12, 0.66}, {0.60, 0.16, 1.06}, 2.2}};
   for (const Case& c : cases) {
     WalkingSim sim;
-    const BoundExit exit = bound_then_trot(sim, c.bound, c.bound_s, kSlowTrotGaitId, c.trot);
+    const TiltWatch exit = bound_then_trot(sim, c.bound, c.bound_s, kSlowTrotGaitId, c.trot);
     EXPECT_TRUE(exit.upright) << "after " << c.bound_s << " s of " << c.bound.transpose();
     EXPECT_LT(exit.worst_tilt_rad, 0.4) << "after " << c.bound_s << " s of " << c.bound.transpose();
     EXPECT_EQ(sim.controller.walker().scheduler().pattern().id, kSlowTrotGaitId);
@@ -224,14 +229,9 @@ TEST(Walking, ASlowTrotTakingOverABackingBodyDoesNotStepAsForAPushAndStaysUprigh
     sim.controller.set(walk_command(kFlyingTrotGaitId, c.back.x(), c.back.y(), c.back.z()));
     sim.run_until(kStart + c.back_s);
     sim.controller.set(walk_command(kSlowTrotGaitId, c.next.x(), c.next.y(), c.next.z()));
-    double worst_tilt = 0.0;
-    bool upright = true;
-    sim.run_until(kStart + c.back_s + 3.0, [&](const CycleRecord&) {
-      worst_tilt = std::max(worst_tilt, sim.tilt_truth());
-      upright &= sim.upright();
-    });
-    EXPECT_TRUE(upright) << "after " << c.back_s << " s of " << c.back.transpose();
-    EXPECT_LT(worst_tilt, 0.4) << "after " << c.back_s << " s of " << c.back.transpose();
+    const TiltWatch watch = watch_until(sim, kStart + c.back_s + 3.0);
+    EXPECT_TRUE(watch.upright) << "after " << c.back_s << " s of " << c.back.transpose();
+    EXPECT_LT(watch.worst_tilt_rad, 0.4) << "after " << c.back_s << " s of " << c.back.transpose();
     EXPECT_EQ(sim.controller.walker().scheduler().pattern().id, kSlowTrotGaitId);
   }
 }
