@@ -24,6 +24,8 @@ struct LocomotionCommand {
   std::array<double, 2> step_height_m{};  // front, rear
   std::int32_t value = 0;
   std::int32_t duration_ms = 0;
+  // set by gait 1 while its trot catches a push (LocomotionTarget::catching_push)
+  bool catching_push = false;
   HighLevelCommand raw;  // every field as received, for gaits that give them their own meaning
 };
 

@@ -12,6 +12,7 @@ LocomotionCommand PushRecoveryStandGait::walking_command() const {
   // velocity feedback places the feet under the moving body
   c.velocity.setZero();
   c.gait_id = recovery_.stepping() ? config_.stepping_gait_id : command_.gait_id;
+  c.catching_push = recovery_.stepping();
   return c;
 }
 

@@ -21,6 +21,7 @@ LocomotionTarget locomotion_target_from(const LocomotionCommand& command) {
   // is more than that (push_recovery_stand_gait)
   const GaitSpec* spec = find_gait(command.gait_id);
   target.stand_holds_position = spec != nullptr && !gait_steps(*spec);
+  target.catching_push = command.catching_push;
   return target;
 }
 

@@ -5,6 +5,7 @@
 
 #include <array>
 #include <cmath>
+#include <string>
 
 #include "app/lockstep_client.hpp"
 #include "app/simulated_robot.hpp"
@@ -107,6 +108,26 @@ TEST(McPushRecovery, TheStandWithPushRecoveryKeepsItsFeetPlantedUntilASteadyShov
       EXPECT_EQ(outcome.final_mode, 11) << side << " at +" << stand_extra_s << " s";
       EXPECT_LT(outcome.final_speed_m_s, 0.05) << side << " at +" << stand_extra_s << " s";
     }
+  }
+}
+
+TEST(McPushRecovery, TheStandWithPushRecoveryCatchesA25NsShoveFromTheLeftOrFrontWithoutTrippingOverItsSideSteps) {
+  // moments of the push sweep where the catching trot, stepping sideways with walking's k, landed
+  // its feet far out under a body moving left at 1-1.9 m/s and tripped it over the diagonal (the
+  // trunk rolled past 0.6 rad), and where 50 N toward the front ended in the footpos watch
+  struct Case {
+    std::array<double, 2> direction;
+    double stand_extra_s;
+  };
+  for (const Case& c :
+       {Case{{0.0, 1.0}, 0.018}, Case{{0.0, 1.0}, 0.09}, Case{{0.0, 1.0}, 0.18}, Case{{1.0, 0.0}, 0.0}}) {
+    const ShoveOutcome outcome = shove(kStandGaitId, 25.0, 0.5, 3.0, c.direction, c.stand_extra_s);
+    const std::string at = "toward (" + std::to_string(c.direction[0]) + ", " + std::to_string(c.direction[1]) +
+                           ") at +" + std::to_string(c.stand_extra_s) + " s";
+    EXPECT_LT(outcome.largest_tilt_rad, 0.6) << at;
+    EXPECT_EQ(outcome.final_mode, 11) << at;
+    EXPECT_LT(outcome.final_speed_m_s, 0.05) << at;
+    EXPECT_TRUE(outcome.all_feet_down_at_the_end) << at;
   }
 }
 

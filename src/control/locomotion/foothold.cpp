@@ -10,7 +10,8 @@ namespace cerebellum {
 Eigen::Vector3d raibert_foothold(const Eigen::Vector3d& hip_world, const Eigen::Vector3d& velocity,
                                  const Eigen::Vector3d& velocity_desired,
                                  const Eigen::Vector3d& velocity_desired_before, double yaw_rate_desired, double yaw,
-                                 double stance_duration_s, double body_height_m, const FootholdConfig& config) {
+                                 double stance_duration_s, double body_height_m, const FootholdConfig& config,
+                                 bool catching_push) {
   Eigen::Vector2d offset = Eigen::Vector2d::Zero();
   for (int axis = 0; axis < 2; ++axis) {
     // symmetric stance about the hip, corrected by the velocity error
@@ -27,6 +28,11 @@ Eigen::Vector3d raibert_foothold(const Eigen::Vector3d& hip_world, const Eigen::
   Eigen::Vector2d local = heading.inverse() * offset;
   const bool pushed = (velocity - velocity_desired).head<2>().norm() > config.push_velocity_error_m_s &&
                       (velocity - velocity_desired_before).head<2>().norm() > config.push_velocity_error_m_s;
+  if (pushed && catching_push) {
+    // the sideways velocity error in the heading frame, corrected with the catch's k instead
+    const Eigen::Vector2d error_local = heading.inverse() * (velocity - velocity_desired).head<2>();
+    local.y() += (config.catch_lateral_velocity_gain - config.velocity_gain) * error_local.y();
+  }
   const double forward = pushed ? config.max_offset_push_m : config.max_offset_forward_m;
   const double lateral = pushed ? config.max_offset_push_m : config.max_offset_lateral_m;
   local.x() = std::clamp(local.x(), -forward, forward);

@@ -245,9 +245,9 @@ Eigen::Vector3d LocomotionController::foothold_world(std::size_t leg, const LegP
   const Eigen::Vector3d velocity_des_world = heading * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
   const Eigen::Vector3d velocity_before_world =
       heading * Eigen::Vector3d(velocity_before_.x(), velocity_before_.y(), 0.0);
-  Eigen::Vector3d foothold =
-      raibert_foothold(hip, state.velocity_world, velocity_des_world, velocity_before_world, velocity_.z(),
-                       state.rpy.z(), phase.stance_duration_s, target_.height_m, config_.foothold);
+  Eigen::Vector3d foothold = raibert_foothold(hip, state.velocity_world, velocity_des_world, velocity_before_world,
+                                              velocity_.z(), state.rpy.z(), phase.stance_duration_s, target_.height_m,
+                                              config_.foothold, target_.catching_push);
   foothold.z() += robot::kFootRadius;  // foot centre above the ground
   return foothold;
 }

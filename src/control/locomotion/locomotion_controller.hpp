@@ -103,6 +103,8 @@ struct LocomotionTarget {
   // the trunk is held over the middle of the feet (ConvexMpcConfig::stand_position_weight); the
   // passive trot's and a user gait's stands stay soft
   bool stand_holds_position = false;
+  // the trot is gait 1's catch of a push on the spot (FootholdConfig::catch_lateral_velocity_gain)
+  bool catching_push = false;
   std::optional<UserStepTargets> user_step;  // a user gait's step; none for the table's gaits
 };
 

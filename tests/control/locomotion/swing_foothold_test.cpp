@@ -87,5 +87,30 @@ TEST(Foothold, ACommandChangeIsNoPushTheFootReachesOnlyAsFarAsInWalking) {
   EXPECT_NEAR(pushed.x(), 0.5 * 0.36 * -0.7 + config.velocity_gain * (-0.7 - 0.1), 1e-12);
 }
 
+TEST(Foothold, CatchingAPushOnTheSpotStepsSidewaysWithTheCatchGainAndForwardAsWalking) {
+  FootholdConfig config;
+  config.velocity_gain = 0.1;
+  config.catch_lateral_velocity_gain = 0.07;
+  // 1 m/s sideways against a command of rest, stance 0.12 s: 0.5 * 0.12 * 1 + 0.07 * 1 = 0.13 m
+  // (walking's k: 0.16 m)
+  const Eigen::Vector3d sideways = raibert_foothold(Eigen::Vector3d::Zero(), {0.0, 1.0, 0}, {0, 0, 0}, {0, 0, 0}, 0.0,
+                                                    0.0, 0.12, 0.25, config, true);
+  EXPECT_NEAR(sideways.y(), 0.13, 1e-12);
+  EXPECT_NEAR(sideways.x(), 0.0, 1e-12);
+  // facing +y (yaw 90 degrees), the body's left is world -x: the same sideways push, turned
+  const Eigen::Vector3d turned = raibert_foothold(Eigen::Vector3d::Zero(), {-1.0, 0.0, 0}, {0, 0, 0}, {0, 0, 0}, 0.0,
+                                                  M_PI / 2, 0.12, 0.25, config, true);
+  EXPECT_NEAR(turned.x(), -0.13, 1e-12);
+  EXPECT_NEAR(turned.y(), 0.0, 1e-12);
+  // along the body the catch steps as walking does: 0.06 + 0.1 = 0.16 m
+  const Eigen::Vector3d forward = raibert_foothold(Eigen::Vector3d::Zero(), {1.0, 0.0, 0}, {0, 0, 0}, {0, 0, 0}, 0.0,
+                                                   0.0, 0.12, 0.25, config, true);
+  EXPECT_NEAR(forward.x(), 0.16, 1e-12);
+  // below the push threshold (0.4 m/s) the walking k holds: 0.024 + 0.04 = 0.064 m
+  const Eigen::Vector3d slow = raibert_foothold(Eigen::Vector3d::Zero(), {0.0, 0.4, 0}, {0, 0, 0}, {0, 0, 0}, 0.0, 0.0,
+                                                0.12, 0.25, config, true);
+  EXPECT_NEAR(slow.y(), 0.064, 1e-12);
+}
+
 }  // namespace
 }  // namespace cerebellum
