@@ -26,12 +26,13 @@ Eigen::Vector3d raibert_foothold(const Eigen::Vector3d& hip_world, const Eigen::
   // clamp in the heading frame
   const Eigen::Rotation2Dd heading(yaw);
   Eigen::Vector2d local = heading.inverse() * offset;
-  const bool pushed = (velocity - velocity_desired).head<2>().norm() > config.push_velocity_error_m_s &&
+  const Eigen::Vector2d error = (velocity - velocity_desired).head<2>();
+  const bool pushed = error.norm() > config.push_velocity_error_m_s &&
                       (velocity - velocity_desired_before).head<2>().norm() > config.push_velocity_error_m_s;
   if (pushed && catching_push) {
-    // the sideways velocity error in the heading frame, corrected with the catch's k instead
-    const Eigen::Vector2d error_local = heading.inverse() * (velocity - velocity_desired).head<2>();
-    local.y() += (config.catch_lateral_velocity_gain - config.velocity_gain) * error_local.y();
+    // the sideways error in the heading frame, corrected with the catch's k instead of the walking
+    // k (a correction, so that every other foothold stays bit for bit what it was)
+    local.y() += (config.catch_lateral_velocity_gain - config.velocity_gain) * (heading.inverse() * error).y();
   }
   const double forward = pushed ? config.max_offset_push_m : config.max_offset_forward_m;
   const double lateral = pushed ? config.max_offset_push_m : config.max_offset_lateral_m;
