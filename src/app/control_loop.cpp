@@ -1,5 +1,6 @@
 #include "app/control_loop.hpp"
 
+#include <algorithm>
 #include <cmath>
 #include <stdexcept>
 #include <thread>
@@ -43,6 +44,7 @@ const CycleRecord& ControlLoop::tick() {
     controller_.compute(record_.state, record_.command);
     record_.contact_plan = controller_.contact_plan();
   }
+  controller_.report(record_.high_level);
   // guard, always last
   record_.safety = guard_command(record_.state, record_.command, guard_limits_, record_.health.protection);
   // write, then the robot runs one period
@@ -82,8 +84,13 @@ void ControlLoop::pace_until(double robot_time_s) {
   const double substep_wall_s = period_s_ / substeps_ / pace_speed_;
   if (Clock::now() > deadline + std::chrono::duration<double>(substep_wall_s)) {
     ++late_substeps_;
-  } else {
-    std::this_thread::sleep_until(deadline);
+    return;
+  }
+  // in slices, so a slowly paced loop (--speed 0.0001: seconds per substep) still stops at once
+  constexpr std::chrono::milliseconds kLongestNap{20};
+  for (Clock::time_point now = Clock::now(); now < deadline; now = Clock::now()) {
+    if (pace_stop_ != nullptr && pace_stop_->load(std::memory_order_relaxed)) return;
+    std::this_thread::sleep_until(std::min(deadline, now + kLongestNap));
   }
 }
 
@@ -91,6 +98,7 @@ RunStats ControlLoop::run(const RunOptions& options, const std::atomic<bool>& st
   using Clock = std::chrono::steady_clock;
   RunStats stats;
   pace_speed_ = options.speed;
+  pace_stop_ = &stop;
   pace_robot_start_s_ = backend_.time_s();
   pace_wall_start_ = Clock::now();
   late_substeps_ = 0;
@@ -104,6 +112,7 @@ RunStats ControlLoop::run(const RunOptions& options, const std::atomic<bool>& st
   stats.robot_time_s = backend_.time_s() - pace_robot_start_s_;
   stats.wall_time_s = std::chrono::duration<double>(Clock::now() - pace_wall_start_).count();
   pace_speed_ = 0.0;
+  pace_stop_ = nullptr;
   return stats;
 }
 

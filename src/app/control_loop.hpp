@@ -62,6 +62,7 @@ class ControlLoop {
   std::vector<SubstepParticipant*> substep_participants_;
   // pacing state of the current run()
   double pace_speed_ = 0.0;
+  const std::atomic<bool>* pace_stop_ = nullptr;  // run()'s stop flag: a slow pace's wait ends on it
   double pace_robot_start_s_ = 0.0;
   std::chrono::steady_clock::time_point pace_wall_start_{};
   std::uint64_t late_substeps_ = 0;

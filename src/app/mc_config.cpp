@@ -45,7 +45,7 @@ void read_motions(const SectionReader& section, const fs::path& base_dir, Motion
 
 void read_robot(const SectionReader& section, const fs::path& base_dir, MujocoBackendConfig& robot) {
   std::string model;
-  section.text("model", model);
+  section.path("model", model);
   if (!model.empty()) {
     const fs::path path(model);
     robot.model_path = (path.is_absolute() ? path : base_dir / path).lexically_normal().string();

@@ -24,9 +24,10 @@ void append_number(std::string& line, double value) {
 
 }  // namespace
 
-TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, const HighLevelStatus& status,
-                           const HighLevelCommand& running) {
+TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth) {
   const RobotState& state = record.state;
+  const HighLevelStatus& status = record.high_level.status;
+  const HighLevelCommand& running = record.high_level.running_command;
   TelemetryRow row;
   row.time_s = state.time_s;
   row.tick = record.tick;
@@ -95,9 +96,8 @@ std::string telemetry_line(const TelemetryRow& row) {
   return line;
 }
 
-TelemetryRecorder::TelemetryRecorder(const std::string& path, double rate_hz, const Simulation& simulation,
-                                     const HighLevelMachine& machine)
-    : path_(path), rate_hz_(rate_hz), simulation_(simulation), machine_(machine) {
+TelemetryRecorder::TelemetryRecorder(const std::string& path, double rate_hz, const Simulation& simulation)
+    : path_(path), rate_hz_(rate_hz), simulation_(simulation) {
   if (!(rate_hz > 0.0)) throw std::invalid_argument("telemetry: the rate must be > 0 Hz");
   file_ = std::fopen(path.c_str(), "w");
   if (!file_) throw std::runtime_error("telemetry: cannot create " + path + ": " + std::strerror(errno));
@@ -116,7 +116,7 @@ void TelemetryRecorder::on_cycle(const CycleRecord& record) {
   if (time_s < start_s_ + static_cast<double>(next_row_) / rate_hz_ - 1e-9) return;
   // one row per tick at most: a rate above the loop's gives every tick
   while (time_s >= start_s_ + static_cast<double>(next_row_) / rate_hz_ - 1e-9) ++next_row_;
-  ring_.try_push(telemetry_row(record, simulation_.ground_truth(), machine_.status(), machine_.running_command()));
+  ring_.try_push(telemetry_row(record, simulation_.ground_truth()));
 }
 
 void TelemetryRecorder::drain() {

@@ -15,7 +15,6 @@
 #include "backend/simulation.hpp"
 #include "core/spsc_ring.hpp"
 #include "cycle/cycle_observer.hpp"
-#include "modes/high_level_machine.hpp"
 
 namespace cerebellum {
 
@@ -41,8 +40,8 @@ struct TelemetryRow {
   std::uint32_t faulty_motors = 0;  // bit i: motor i reports an error or a warning
 };
 
-TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth, const HighLevelStatus& status,
-                           const HighLevelCommand& running);
+// the cycle (its state and high-level report) and the simulator's truth as one row
+TelemetryRow telemetry_row(const CycleRecord& record, const GroundTruth& truth);
 // the header line and one row, without the newline
 std::string telemetry_header();
 std::string telemetry_line(const TelemetryRow& row);
@@ -57,8 +56,7 @@ class TelemetryRecorder final : public CycleObserver {
  public:
   // rate_hz: rows per second of robot time (a rate above the loop's gives every tick);
   // throws std::runtime_error naming the file when it cannot be created
-  TelemetryRecorder(const std::string& path, double rate_hz, const Simulation& simulation,
-                    const HighLevelMachine& machine);
+  TelemetryRecorder(const std::string& path, double rate_hz, const Simulation& simulation);
   ~TelemetryRecorder() override;
   TelemetryRecorder(const TelemetryRecorder&) = delete;
   TelemetryRecorder& operator=(const TelemetryRecorder&) = delete;
@@ -73,7 +71,6 @@ class TelemetryRecorder final : public CycleObserver {
   std::string path_;
   double rate_hz_;
   const Simulation& simulation_;
-  const HighLevelMachine& machine_;
   std::FILE* file_ = nullptr;
   // loop thread
   bool started_ = false;

@@ -6,8 +6,7 @@ namespace cerebellum {
 
 SimTools::SimTools(Mc& mc, const SimOptions& options) : mc_(mc), options_(options) {
   if (!options.telemetry_path.empty()) {
-    telemetry_ = std::make_unique<TelemetryRecorder>(options.telemetry_path, options.telemetry_rate_hz, mc.simulation(),
-                                                     mc.machine());
+    telemetry_ = std::make_unique<TelemetryRecorder>(options.telemetry_path, options.telemetry_rate_hz, mc.simulation());
     mc.loop().add_observer(*telemetry_);
   }
   if (!options.record_path.empty()) {
@@ -18,7 +17,7 @@ SimTools::SimTools(Mc& mc, const SimOptions& options) : mc_(mc), options_(option
     video.height = options.record_height;
     video.lockstep = options.speed <= 0.0;
     if (!video.lockstep) video.buffer_frames = static_cast<std::size_t>(options.record_fps * kPacedVideoBufferS);
-    video_ = std::make_unique<VideoRecorder>(mc.simulation(), mc.machine(), video);
+    video_ = std::make_unique<VideoRecorder>(mc.simulation(), video);
     mc.loop().add_observer(*video_);
   }
   if (options.viewer) viewer_ = std::make_unique<ViewerSession>(mc);

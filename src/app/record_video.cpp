@@ -10,10 +10,10 @@
 
 namespace cerebellum {
 
-VideoRecorder::VideoRecorder(const Simulation& simulation, const HighLevelMachine& machine, const VideoOptions& options)
+VideoRecorder::VideoRecorder(const Simulation& simulation, const VideoOptions& options)
     : options_(options),
       simulation_(simulation),
-      capture_(simulation, machine),
+      capture_(simulation),
       staging_(capture_.sized_snapshot()),
       slots_(std::max<std::size_t>(1, options.buffer_frames)) {
   for (Slot& slot : slots_) slot.snapshot = capture_.sized_snapshot();

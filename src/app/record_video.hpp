@@ -47,7 +47,7 @@ class VideoRecorder final : public CycleObserver {
  public:
   // starts the render thread; throws std::runtime_error when the headless context or ffmpeg
   // cannot be started
-  VideoRecorder(const Simulation& simulation, const HighLevelMachine& machine, const VideoOptions& options);
+  VideoRecorder(const Simulation& simulation, const VideoOptions& options);
   ~VideoRecorder() override;
   VideoRecorder(const VideoRecorder&) = delete;
   VideoRecorder& operator=(const VideoRecorder&) = delete;

@@ -42,8 +42,8 @@ std::string run_state_text(const PaceRequest& pace, double base_speed) {
 
 }  // namespace
 
-ViewerExchange::ViewerExchange(const Simulation& simulation, const HighLevelMachine& machine)
-    : capture_(simulation, machine), staging_(capture_.sized_snapshot()), shared_(capture_.sized_snapshot()) {}
+ViewerExchange::ViewerExchange(const Simulation& simulation)
+    : capture_(simulation), staging_(capture_.sized_snapshot()), shared_(capture_.sized_snapshot()) {}
 
 void ViewerExchange::on_cycle(const CycleRecord& record) {
   capture_.capture(record, staging_);
@@ -63,7 +63,7 @@ bool ViewerExchange::latest(SimSnapshot& out) {
 ViewerSession::ViewerSession(Mc& mc)
     : mc_(mc),
       window_(std::make_unique<ViewerWindow>(mc.simulation().model(), "cerebellum: simulated CyberDog2")),
-      exchange_(mc.simulation(), mc.machine()) {
+      exchange_(mc.simulation()) {
   mc.loop().add_observer(exchange_);
 }
 

@@ -21,7 +21,7 @@ class ViewerWindow;
 // the loop side: a CycleObserver that copies snapshots out (it only reads)
 class ViewerExchange final : public CycleObserver {
  public:
-  ViewerExchange(const Simulation& simulation, const HighLevelMachine& machine);
+  explicit ViewerExchange(const Simulation& simulation);
 
   // loop thread; never waits for the viewer (a busy snapshot is handed over next tick)
   void on_cycle(const CycleRecord& record) override;

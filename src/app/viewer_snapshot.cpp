@@ -7,9 +7,8 @@
 
 namespace cerebellum {
 
-SnapshotCapture::SnapshotCapture(const Simulation& simulation, const HighLevelMachine& machine)
+SnapshotCapture::SnapshotCapture(const Simulation& simulation)
     : simulation_(simulation),
-      machine_(machine),
       trunk_body_(std::max(0, mj_name2id(simulation.model(), mjOBJ_BODY, "trunk"))) {}
 
 SimSnapshot SnapshotCapture::sized_snapshot() const {
@@ -27,8 +26,8 @@ void SnapshotCapture::capture(const CycleRecord& record, SimSnapshot& out) const
   std::copy_n(data->qpos, std::min(out.qpos.size(), static_cast<std::size_t>(model->nq)), out.qpos.begin());
   std::copy_n(data->qvel, std::min(out.qvel.size(), static_cast<std::size_t>(model->nv)), out.qvel.begin());
   for (int k = 0; k < 3; ++k) out.external_force_n[k] = data->xfrc_applied[6 * trunk_body_ + k];
-  out.status = machine_.status();
-  const HighLevelCommand& running = machine_.running_command();
+  out.status = record.high_level.status;
+  const HighLevelCommand& running = record.high_level.running_command;
   out.commanded_velocity = {};
   if (running.mode == static_cast<int>(ModeId::Locomotion)) {
     out.commanded_velocity = {running.vel_des[0], running.vel_des[1], running.vel_des[2]};

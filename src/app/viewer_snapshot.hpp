@@ -5,15 +5,13 @@
 
 #include "backend/simulation.hpp"
 #include "cycle/cycle_record.hpp"
-#include "modes/high_level_machine.hpp"
 #include "viz/sim_snapshot.hpp"
 
 namespace cerebellum {
 
 class SnapshotCapture {
  public:
-  // machine: its status and running command, read at every capture
-  SnapshotCapture(const Simulation& simulation, const HighLevelMachine& machine);
+  explicit SnapshotCapture(const Simulation& simulation);
 
   // a snapshot whose state vectors are sized to the model (allocates once)
   SimSnapshot sized_snapshot() const;
@@ -22,7 +20,6 @@ class SnapshotCapture {
 
  private:
   const Simulation& simulation_;
-  const HighLevelMachine& machine_;
   int trunk_body_ = 0;
 };
 

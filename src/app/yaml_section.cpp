@@ -75,6 +75,26 @@ void SectionReader::text(const std::string& key, std::string& value, const std::
   value = parsed;
 }
 
+void SectionReader::path(const std::string& key, std::string& value) const {
+  if (!node_[key]) return;
+  const YAML::Node node = node_[key];
+  if (!node.IsScalar()) fail(qualified(key), "must be a file path (a string)");
+  // "?": a plain (unquoted) scalar, which YAML resolves to a number or a boolean when it reads as one
+  if (node.Tag() == "?") {
+    double number = 0.0;
+    bool boolean = false;
+    if (YAML::convert<double>::decode(node, number)) {
+      fail(qualified(key), "must be a file path (a string), got the number " + node.Scalar() +
+                               " (quote it if a file has that name)");
+    }
+    if (YAML::convert<bool>::decode(node, boolean)) {
+      fail(qualified(key), "must be a file path (a string), got the boolean " + node.Scalar());
+    }
+  }
+  if (node.Scalar().empty()) fail(qualified(key), "must be a file path, got an empty string");
+  value = node.Scalar();
+}
+
 void SectionReader::fail(const std::string& key, const std::string& what) const {
   throw ConfigError(kind_ + " " + file_ + ": " + key + " " + what);
 }

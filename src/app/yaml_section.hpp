@@ -26,6 +26,9 @@ class SectionReader {
   void flag(const std::string& key, bool& value) const;
   void unsigned_integer(const std::string& key, unsigned& value) const;
   void text(const std::string& key, std::string& value, const std::set<std::string>& choices = {}) const;
+  // a file's path: a string; an unquoted number or true/false (YAML's other plain scalars) is refused,
+  // since no one means the file "42"
+  void path(const std::string& key, std::string& value) const;
   [[noreturn]] void fail(const std::string& key, const std::string& what) const;
 
  private:

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "core/contact_plan.hpp"
+#include "core/high_level_command.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "safety/health_monitor.hpp"
@@ -19,6 +20,9 @@ class MotionController {
   virtual void observe_health(const HealthVerdict& /*verdict*/) {}
   // the contacts the last compute() planned for the next tick; none unless a gait steps
   virtual ContactPlan contact_plan() const { return std::nullopt; }
+  // called every tick after compute() (and in its place while the state is not valid): the
+  // high-level state for the cycle record; controllers without one leave the report as it is
+  virtual void report(HighLevelReport& /*report*/) const {}
 };
 
 }  // namespace cerebellum

@@ -4,6 +4,7 @@
 #include <cstdint>
 
 #include "core/contact_plan.hpp"
+#include "core/high_level_command.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "safety/command_guard.hpp"
@@ -18,6 +19,7 @@ struct CycleRecord {
   ContactPlan contact_plan;  // planned by the control stage, for the estimator at the next tick
   SafetyReport safety;
   HealthVerdict health;  // the health protection of this tick (enforced by the guard)
+  HighLevelReport high_level;  // the high-level state machine after this tick (status, running command)
   // the guard over the commands substep participants wrote during this tick's period (flags OR-ed;
   // zero when none did). Filled after the observers ran: they see the previous period's here
   SafetyReport substep_safety;

@@ -5,7 +5,7 @@
 #include <Eigen/Core>
 
 #include "core/robot_model.hpp"
-#include "modes/high_level_command.hpp"
+#include "core/high_level_command.hpp"
 
 namespace cerebellum {
 

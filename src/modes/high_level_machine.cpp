@@ -23,9 +23,7 @@ HighLevelMachine::HighLevelMachine(double tick_period_s, const HighLevelCommand&
 void HighLevelMachine::add_mode(Mode& mode) { modes_[static_cast<std::size_t>(mode.id())] = &mode; }
 
 bool HighLevelMachine::submit(const HighLevelCommand& command, double received_s, HighLevelSource source) {
-  if (inbox_.try_push({command, received_s, source})) return true;
-  counters_.ring_overflow.fetch_add(1, std::memory_order_relaxed);
-  return false;
+  return inbox_.push({command, received_s, source});
 }
 
 Mode* HighLevelMachine::mode_for(int mode) const {
@@ -51,17 +49,15 @@ void HighLevelMachine::refuse(const HighLevelCommand& command, const char* reaso
 }
 
 bool HighLevelMachine::holds_lease(const TimedCommand& input) {
-  const bool holder_silent = !holder_ || input.received_s - holder_last_s_ > CommandQueue::kHeartbeatTimeoutS;
-  if (holder_ == input.source || holder_silent) {
-    if (holder_ && holder_ != input.source) {
+  switch (lease_.judge(input.source, input.received_s)) {
+    case SourceLease::Verdict::Holds: return true;
+    case SourceLease::Verdict::TakesOver:
       // the last holder went silent (its timeout has damped the robot or will): a new client
       counters_.lease_handovers.fetch_add(1, std::memory_order_relaxed);
       queue_.start_new_client();
       applied_generation_ = queue_.generation();
-    }
-    holder_ = input.source;
-    holder_last_s_ = input.received_s;
-    return true;
+      return true;
+    case SourceLease::Verdict::Refused: break;
   }
   const auto source = static_cast<std::size_t>(input.source);
   counters_.refused_not_holder[source].fetch_add(1, std::memory_order_relaxed);
@@ -72,7 +68,7 @@ bool HighLevelMachine::holds_lease(const TimedCommand& input) {
         {input.command.mode, input.command.gait_id, current_ != nullptr ? static_cast<int>(current_->id()) : -1,
          input.source == HighLevelSource::CyberDog2Lcm ? "another high-level client holds the robot"
                                                        : "another high-level client holds the robot (HighCmd)",
-         source_name(*holder_)});
+         source_name(*lease_.holder())});
   }
   // the LCM client sees its refusal in robot_control_response
   if (input.source == HighLevelSource::CyberDog2Lcm) {
@@ -104,11 +100,11 @@ bool HighLevelMachine::take_input(const TimedCommand& input) {
 void HighLevelMachine::observe_while_held(const RobotState& state, const char* holder) {
   // the latch lasts until restart: a new command is refused and never queued; heartbeats only
   // refresh the client's life_count memory
-  while (const auto input = inbox_.try_pop()) {
-    if (!take_input(*input)) continue;
-    refuse(input->command, "a low-level client holds the robot until restart", holder);
+  inbox_.take([&](const TimedCommand& input) {
+    if (!take_input(input)) return;
+    refuse(input.command, "a low-level client holds the robot until restart", holder);
     queue_.clear();
-  }
+  });
   applied_generation_ = queue_.generation();
   update_status(state);
 }
@@ -253,14 +249,16 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
   }
   // the health protection first: what the client sends from now on meets the protected mode
   if (health_.protecting()) protect(state, health_.protection);
-  // client input of this tick, from the client holding the robot
-  while (const auto input = inbox_.try_pop()) {
-    if (holds_lease(*input)) take_input(*input);
-  }
+  // client input of this tick (a bounded share of each source), from the client holding the robot
+  inbox_.take([&](const TimedCommand& input) {
+    if (holds_lease(input)) take_input(input);
+  });
   // a client that went silent: get-down protection; a jump in the air lands first (damping a
   // robot in flight would drop it), the protection follows once it stands
   if (queue_.timed_out(state.time_s) && !current_->must_finish()) {
-    counters_.timeouts.fetch_add(1, std::memory_order_relaxed);
+    if (const std::optional<HighLevelSource> holder = lease_.holder()) {
+      counters_.timeouts[static_cast<std::size_t>(*holder)].fetch_add(1, std::memory_order_relaxed);
+    }
     queue_.clear();
     applied_generation_ = queue_.generation();
     Mode* damper = mode_for(static_cast<int>(ModeId::PureDamper));
@@ -290,6 +288,12 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
   queue_.tick(!holds_entry && current_->progress_percent() < 100, holds_entry);
   current_->run(state, command);
   update_status(state);
+}
+
+void HighLevelMachine::report(HighLevelReport& report) const {
+  report.status = status_;
+  report.running_command = running_command_;
+  report.holder = lease_.holder();
 }
 
 ContactPlan HighLevelMachine::contact_plan() const {

@@ -10,8 +10,10 @@
 
 #include "modes/source_arbiter.hpp"
 #include "core/spsc_ring.hpp"
+#include "modes/command_inbox.hpp"
 #include "modes/command_queue.hpp"
 #include "modes/mode.hpp"
+#include "modes/source_lease.hpp"
 #include "safety/lift_detector.hpp"
 #include "safety/safety_report.hpp"
 
@@ -24,9 +26,9 @@ struct CommandCounters {
   std::atomic<std::uint64_t> rejected_non_finite{0};
   std::atomic<std::uint64_t> queue_full{0};
   std::atomic<std::uint64_t> motions_dropped{0};  // mode-62 commands while a motion ran
-  std::atomic<std::uint64_t> ring_overflow{0};
   std::atomic<std::uint64_t> banned_transitions{0};
-  std::atomic<std::uint64_t> timeouts{0};
+  // the holder went silent past the heartbeat timeout (get-down protection), per source
+  std::array<std::atomic<std::uint64_t>, kHighLevelSourceCount> timeouts{};
   // commands and heartbeats of a client refused while another one holds the robot, per source
   std::array<std::atomic<std::uint64_t>, kHighLevelSourceCount> refused_not_holder{};
   std::atomic<std::uint64_t> lease_handovers{0};
@@ -49,9 +51,12 @@ class HighLevelMachine final : public OwnBehaviour {
   // register a mode before the loop starts; the machine starts in the startup command's mode
   void add_mode(Mode& mode);
 
-  // client thread: hand over one received command (lock-free); false when the ring is full
+  // client thread: hand over one received command (lock-free); false when the source's ring is
+  // full or another thread already submits for this source (one producer thread per source)
   bool submit(const HighLevelCommand& command, double received_s,
               HighLevelSource source = HighLevelSource::CyberDog2Lcm);
+  // what happened to each source's input on its way to the tick (any thread)
+  const SourceInputCounters& input_counters(HighLevelSource source) const { return inbox_.counters(source); }
 
   // loop thread
   void compute(const RobotState& state, JointCommand& command) override;
@@ -65,7 +70,9 @@ class HighLevelMachine final : public OwnBehaviour {
   // refuses every new command (BAN_TRANS) and reports mode 15 with the live contacts and errors
   void observe_while_held(const RobotState& state, const char* holder) override;
 
-  // loop thread (or a CycleObserver in it): the response fields as of the last tick
+  // the cycle record's high-level report (observers read it there)
+  void report(HighLevelReport& report) const override;
+  // loop thread (tests and the machine's own parts): the response fields as of the last tick
   const HighLevelStatus& status() const { return status_; }
   const CommandCounters& counters() const { return counters_; }
   // the command the running mode was entered or last updated with (loop thread)
@@ -74,7 +81,7 @@ class HighLevelMachine final : public OwnBehaviour {
   const SafetyReport& body_report() const { return body_report_; }
   // the client holding the robot (loop thread); none before the first command and after the
   // holder has been silent past the heartbeat timeout
-  std::optional<HighLevelSource> holder() const { return holder_; }
+  std::optional<HighLevelSource> holder() const { return lease_.holder(); }
   // refusals not yet taken by a logger (loop thread pushes, one consumer thread pops)
   SpscRing<RefusalNote, 16>& refusals() { return refusals_; }
 
@@ -98,7 +105,8 @@ class HighLevelMachine final : public OwnBehaviour {
   void protect(const RobotState& state, Protection protection);
 
   CommandQueue queue_;
-  SpscRing<TimedCommand, 64> inbox_;
+  CommandInbox inbox_;
+  SourceLease lease_{CommandQueue::kHeartbeatTimeoutS};
   std::array<Mode*, kMaxModeId + 1> modes_{};
   Mode* current_ = nullptr;
   HighLevelCommand startup_;
@@ -118,8 +126,6 @@ class HighLevelMachine final : public OwnBehaviour {
   int foot_position_error_ = 0;       // footpos_error bits, latched likewise
   HealthVerdict health_;              // the health protection of this tick
   SpscRing<RefusalNote, 16> refusals_;
-  std::optional<HighLevelSource> holder_;
-  double holder_last_s_ = 0.0;
   std::array<int, kHighLevelSourceCount> refused_life_count_{-1, -1};  // the last one noted per source
 };
 

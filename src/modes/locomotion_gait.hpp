@@ -11,7 +11,7 @@
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "modes/command_ranges.hpp"
-#include "modes/high_level_command.hpp"
+#include "core/high_level_command.hpp"
 
 namespace cerebellum {
 

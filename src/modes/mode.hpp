@@ -4,7 +4,7 @@
 #include "core/contact_plan.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
-#include "modes/high_level_command.hpp"
+#include "core/high_level_command.hpp"
 
 namespace cerebellum {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "modes/high_level_command.hpp"
+#include "core/high_level_command.hpp"
 #include "modes/user_gait.hpp"
 
 namespace cerebellum {

@@ -45,6 +45,8 @@ class SourceArbiter final : public MotionController {
   void observe_health(const HealthVerdict& verdict) override { own_.observe_health(verdict); }
   // the plan of whoever computed the command: the latched source or the MC's own behaviour
   ContactPlan contact_plan() const override;
+  // the MC's own behaviour reports the high-level state whoever holds the robot
+  void report(HighLevelReport& report) const override { own_.report(report); }
 
   // the latched source, or nullptr while the MC's own behaviour runs
   const LowLevelSource* latched() const { return latched_; }

@@ -1,7 +1,7 @@
 // Which mode may follow which (the interface's Appendix Table 1); anything else is BAN_TRANS.
 #pragma once
 
-#include "modes/high_level_command.hpp"
+#include "core/high_level_command.hpp"
 
 namespace cerebellum {
 

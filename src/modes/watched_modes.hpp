@@ -2,7 +2,7 @@
 // wrong): which modes are watched, and where a lifted robot resumes once it is set down.
 #pragma once
 
-#include "modes/high_level_command.hpp"
+#include "core/high_level_command.hpp"
 
 namespace cerebellum {
 

@@ -12,7 +12,7 @@
 #include <string>
 #include <string_view>
 
-#include "modes/high_level_command.hpp"
+#include "core/high_level_command.hpp"
 
 namespace cerebellum {
 

@@ -4,7 +4,7 @@
 
 #include <string>
 
-#include "modes/high_level_command.hpp"
+#include "core/high_level_command.hpp"
 #include "viz/sim_snapshot.hpp"
 
 namespace cerebellum {

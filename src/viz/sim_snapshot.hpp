@@ -6,7 +6,7 @@
 #include <cstdint>
 #include <vector>
 
-#include "modes/high_level_command.hpp"
+#include "core/high_level_command.hpp"
 
 namespace cerebellum {
 

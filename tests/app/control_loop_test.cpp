@@ -5,6 +5,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <future>
 
 #include "backend/fake_backend.hpp"
 #include "estimation/kinematic_estimator.hpp"
@@ -140,6 +141,30 @@ TEST(ControlLoop, RunReturnsAtOnceWhenStopIsSet) {
   Loop l(controller);
   const std::atomic<bool> stop{true};
   EXPECT_EQ(l.loop.run({-1.0, 0.0}, stop).ticks, 0u);
+}
+
+// stops the run from inside its first tick, the way a signal arrives while the loop waits
+class StoppingController final : public MotionController {
+ public:
+  explicit StoppingController(std::atomic<bool>& stop) : stop_(stop) {}
+  void compute(const RobotState&, JointCommand& command) override {
+    command = JointCommand{};
+    stop_.store(true);
+  }
+
+ private:
+  std::atomic<bool>& stop_;
+};
+
+TEST(ControlLoop, AStopEndsTheRunAtOnceEvenWhenThePaceWaitsMinutesPerSubstep) {
+  std::atomic<bool> stop{false};
+  StoppingController controller(stop);
+  Loop l(controller);
+  // 1e-6 of real time: each 0.5 ms substep is paced to 500 s of wall time; the run must not
+  // wait them out once stopped (the generous limit below is 15 of those waits shorter)
+  std::future<RunStats> run = std::async(std::launch::async, [&] { return l.loop.run({-1.0, 1e-6}, stop); });
+  ASSERT_EQ(run.wait_for(std::chrono::seconds(30)), std::future_status::ready) << "the run did not stop";
+  EXPECT_EQ(run.get().ticks, 1u);
 }
 
 // plans every leg in stance with the tick count as its stance phase (none on the first tick)

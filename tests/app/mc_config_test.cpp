@@ -62,6 +62,15 @@ TEST(McConfig, UnknownKeyIsNamedWithTheAcceptedKeys) {
   EXPECT_NE(error.find("config_under_test.yaml"), std::string::npos) << error;
 }
 
+TEST(McConfig, AModelGivenAsANumberOrABooleanIsRefusedAsNoPathButAQuotedOneIsAName) {
+  const std::string number = load_error("robot:\n  model: 42\n");
+  EXPECT_NE(number.find("robot.model must be a file path (a string), got the number 42"), std::string::npos) << number;
+  const std::string boolean = load_error("robot:\n  model: true\n");
+  EXPECT_NE(boolean.find("robot.model must be a file path (a string), got the boolean true"), std::string::npos)
+      << boolean;
+  EXPECT_EQ(load_error("robot:\n  model: '42'\n"), "");
+}
+
 TEST(McConfig, OutOfRangeValueNamesTheRange) {
   const std::string error = load_error("stand_up:\n  kp: 500\n");
   EXPECT_NE(error.find("stand_up.kp must be in [0, 200], got 500"), std::string::npos) << error;

@@ -11,7 +11,7 @@
 #include "io/lcm_common/lcm_packet.hpp"
 #include "file_recv_lcmt.hpp"
 #include "localization_lcmt.hpp"
-#include "modes/high_level_command.hpp"
+#include "core/high_level_command.hpp"
 #include "robot_control_cmd_lcmt.hpp"
 #include "robot_control_response_lcmt.hpp"
 

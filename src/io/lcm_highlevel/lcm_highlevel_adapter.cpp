@@ -64,7 +64,7 @@ LcmHighLevelAdapter::~LcmHighLevelAdapter() { thread_.stop(); }
 void LcmHighLevelAdapter::on_cycle(const CycleRecord& record) {
   robot_time_s_.store(record.state.time_s, std::memory_order_relaxed);
   latest_tick_.store(record.tick, std::memory_order_relaxed);
-  const HighLevelStatus& status = machine_.status();
+  const HighLevelStatus& status = record.high_level.status;
   const PublishDue due = schedule_.on_tick(record.tick, status);
   if (due.any() && telemetry_.try_push(Telemetry{due, record.tick, status, record.state})) {
     feedback_queued_.fetch_add(1, std::memory_order_release);
@@ -214,8 +214,10 @@ LcmHighLevelAdapter::LoggedCounts LcmHighLevelAdapter::current_counts() const {
   c.oversized = oversized_.load();
   c.non_finite = machine.rejected_non_finite.load();
   c.queue_full = machine.queue_full.load();
-  c.ring_overflow = machine.ring_overflow.load();
-  c.timeouts = machine.timeouts.load();
+  const SourceInputCounters& input = machine_.input_counters(HighLevelSource::CyberDog2Lcm);
+  c.ring_overflow = input.ring_overflow.load();
+  c.wrong_thread = input.wrong_thread.load();
+  c.timeouts = machine.timeouts[static_cast<std::size_t>(HighLevelSource::CyberDog2Lcm)].load();
   c.telemetry_dropped = telemetry_.dropped();
   return c;
 }
@@ -231,13 +233,14 @@ void LcmHighLevelAdapter::log_counts_once_per_second() {
   append_count(text, now.non_finite - before.non_finite, "with NaN/Inf");
   append_count(text, now.queue_full - before.queue_full, "timed commands beyond the 64-entry queue");
   append_count(text, now.ring_overflow - before.ring_overflow, "arriving faster than the loop takes them");
+  append_count(text, now.wrong_thread - before.wrong_thread, "handed over by a second thread (a defect: one thread per client)");
   if (!text.empty()) {
     std::fprintf(log_, "highlevel: robot_control_cmd packets rejected in the last second: %s\n", text.c_str());
   }
   if (now.timeouts != before.timeouts) {
     std::fprintf(log_,
-                 "highlevel: no robot_control_cmd for 0.5 s: get-down protection (PureDamper, or Off when "
-                 "Off); %llu times so far\n",
+                 "highlevel: no robot_control_cmd for 0.5 s from the client holding the robot: get-down "
+                 "protection (PureDamper, or Off when Off); %llu times so far\n",
                  static_cast<unsigned long long>(now.timeouts));
   }
   if (now.telemetry_dropped != before.telemetry_dropped) {
@@ -261,7 +264,7 @@ void LcmHighLevelAdapter::finish(std::FILE* out) {
                "%llu stored, %llu refused; %llu feedback cycles dropped\n",
                ull(c.commands_submitted), ull(m.new_commands.load()), ull(m.banned_transitions.load()),
                ull(m.rejected_non_finite.load()), ull(m.queue_full.load()), ull(c.wrong_fingerprint), ull(c.truncated),
-               ull(c.oversized), ull(m.timeouts.load()), ull(c.responses_published), ull(c.odometry_published),
+               ull(c.oversized), ull(m.timeouts[static_cast<std::size_t>(HighLevelSource::CyberDog2Lcm)].load()), ull(c.responses_published), ull(c.odometry_published),
                ull(c.temperatures_published), ull(c.gait_files_accepted), ull(c.gait_files_refused),
                ull(c.telemetry_dropped));
   std::fflush(out);

@@ -77,7 +77,7 @@ class LcmHighLevelAdapter final : public CycleObserver {
   };
   struct LoggedCounts {
     std::uint64_t wrong_fingerprint = 0, truncated = 0, oversized = 0;
-    std::uint64_t non_finite = 0, queue_full = 0, ring_overflow = 0, timeouts = 0, telemetry_dropped = 0;
+    std::uint64_t non_finite = 0, queue_full = 0, ring_overflow = 0, wrong_thread = 0, timeouts = 0, telemetry_dropped = 0;
   };
 
   void step();

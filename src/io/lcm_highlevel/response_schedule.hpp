@@ -5,7 +5,7 @@
 
 #include <cstdint>
 
-#include "modes/high_level_command.hpp"
+#include "core/high_level_command.hpp"
 
 namespace cerebellum {
 

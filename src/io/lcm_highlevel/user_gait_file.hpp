@@ -11,7 +11,7 @@
 #include <vector>
 
 #include "control/locomotion/gait_table.hpp"
-#include "modes/high_level_command.hpp"
+#include "core/high_level_command.hpp"
 
 namespace cerebellum {
 

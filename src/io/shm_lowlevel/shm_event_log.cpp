@@ -13,7 +13,9 @@ constexpr int kClientLinesPerSecond = 5;
 }  // namespace
 
 ShmEventLog::ShmEventLog(std::FILE* out)
-    : out_(out), client_lines_(out, "cerebellum shm", "rejected or ignored command frames", kClientLinesPerSecond) {
+    : out_(out),
+      client_lines_(out, "cerebellum shm", "rejected command frames", kClientLinesPerSecond),
+      ignored_lines_(out, "cerebellum shm", "ignored command frames", kClientLinesPerSecond) {
   printer_ = std::thread([this] {
     while (running_.load()) {
       const std::uint64_t requested = flush_requests_.load();
@@ -37,6 +39,7 @@ void ShmEventLog::flush() {
 
 void ShmEventLog::drain() {
   client_lines_.tick(wall_seconds());
+  ignored_lines_.tick(wall_seconds());
   while (auto event = ring_.try_pop()) print(*event);
   const std::size_t dropped = ring_.dropped();
   if (dropped != dropped_reported_) {
@@ -65,7 +68,7 @@ void ShmEventLog::print(const ShmEvent& event) {
       char line[160];
       std::snprintf(line, sizeof line, "t=%.3f s command frames ignored: %s has the robot", event.time_s,
                     event.holder != nullptr ? event.holder : "another source");
-      client_lines_.line(wall_seconds(), line);
+      ignored_lines_.line(wall_seconds(), line);
       break;
     }
     case ShmEventKind::CommandTimedOut:

@@ -35,8 +35,11 @@ class ShmEventLog {
   void post(const ShmEvent& event) { ring_.try_push(event); }
   // print what is queued now and wait until it is written (any thread but the loop's)
   void flush();
-  // lines a client provoked (rejected or ignored frames) that the rate limit did not print
-  std::uint64_t client_lines_suppressed() const { return client_lines_.suppressed(); }
+  // lines a client provoked that the rate limit did not print: rejected frames, and frames ignored
+  // because another source has the robot (each kind has its own budget, so a client whose frames
+  // are rejected still learns, once a second at least, that another source has the robot)
+  std::uint64_t client_lines_suppressed() const { return client_lines_.suppressed() + ignored_lines_.suppressed(); }
+  std::uint64_t ignored_lines_written() const { return ignored_lines_.written(); }
 
  private:
   void drain();
@@ -45,6 +48,7 @@ class ShmEventLog {
   std::FILE* out_;
   // a client can send a bad frame every millisecond: at most a few such lines per second
   RateLimitedLog client_lines_;
+  RateLimitedLog ignored_lines_;
   SpscRing<ShmEvent, 64> ring_;
   std::size_t dropped_reported_ = 0;
   std::atomic<bool> running_{true};

@@ -20,6 +20,9 @@ namespace {
 constexpr const char* kInterfaceName = "aliengo";
 constexpr int kRefusalLinesPerSecond = 5;
 constexpr int kPollTimeoutMs = 1;
+// a step reads at most this many datagrams before it logs and looks at the loop again: a client
+// streaming faster than the thread reads must not keep it in one drain with an old cycle
+constexpr int kMaxDatagramsPerStep = 64;
 
 int open_socket(const AlienGoUdpConfig& config, int& bound_port) {
   sockaddr_in address{};
@@ -64,7 +67,7 @@ UdpAliengoAdapter::~UdpAliengoAdapter() {
 }
 
 void UdpAliengoAdapter::on_cycle(const CycleRecord& record) {
-  const HighLevelStatus& status = machine_.status();
+  const HighLevelStatus& status = record.high_level.status;
   snapshots_.try_push(Snapshot{record.state, status.mode, status.gait_id, status.order_process_bar});
 }
 
@@ -89,7 +92,9 @@ void UdpAliengoAdapter::step() {
   ::poll(&waiting, 1, kPollTimeoutMs);
   take_newest_snapshot();
   bool any = false;
-  for (;;) {
+  for (int read = 0; read < kMaxDatagramsPerStep; ++read) {
+    // each command is stamped with the robot time of the newest cycle when it is read
+    take_newest_snapshot();
     sockaddr_in sender{};
     socklen_t sender_length = sizeof sender;
     const ssize_t got = ::recvfrom(socket_, buffer_.data(), buffer_.size(), MSG_TRUNC,
@@ -172,6 +177,21 @@ void UdpAliengoAdapter::log_once_per_second() {
                  static_cast<unsigned long long>(c.refused_not_holder - logged_not_holder_));
     logged_not_holder_ = c.refused_not_holder;
   }
+  if (c.ring_overflow != logged_overflow_) {
+    std::fprintf(log_,
+                 "aliengo: %llu HighCmd dropped in the last second: they arrive faster than the loop takes them "
+                 "(%d a tick)\n",
+                 static_cast<unsigned long long>(c.ring_overflow - logged_overflow_),
+                 static_cast<int>(CommandInbox::kTakePerSourcePerTick));
+    logged_overflow_ = c.ring_overflow;
+  }
+  if (c.timeouts != logged_timeouts_) {
+    std::fprintf(log_,
+                 "aliengo: no HighCmd for 0.5 s from the client holding the robot: get-down protection "
+                 "(PureDamper, or Off when Off); %llu times so far\n",
+                 static_cast<unsigned long long>(c.timeouts));
+    logged_timeouts_ = c.timeouts;
+  }
   std::fflush(log_);
 }
 
@@ -186,8 +206,10 @@ AlienGoCounters UdpAliengoAdapter::counters() const {
   c.illegal_moves = illegal_moves_.load();
   c.states_sent = states_sent_.load();
   c.send_errors = send_errors_.load();
-  c.refused_not_holder =
-      machine_.counters().refused_not_holder[static_cast<std::size_t>(HighLevelSource::AlienGoUdp)].load();
+  constexpr auto kSource = static_cast<std::size_t>(HighLevelSource::AlienGoUdp);
+  c.refused_not_holder = machine_.counters().refused_not_holder[kSource].load();
+  c.timeouts = machine_.counters().timeouts[kSource].load();
+  c.ring_overflow = machine_.input_counters(HighLevelSource::AlienGoUdp).ring_overflow.load();
   return c;
 }
 
@@ -197,11 +219,11 @@ void UdpAliengoAdapter::finish(std::FILE* out) {
   using ull = unsigned long long;
   std::fprintf(out,
                "aliengo: HighCmd %llu received, %llu accepted, %llu wrong length, %llu bad CRC, %llu not high "
-               "level, %llu NaN/Inf, %llu illegal moves, %llu refused (another client held the robot); "
-               "HighState %llu sent, %llu send errors\n",
+               "level, %llu NaN/Inf, %llu illegal moves, %llu refused (another client held the robot), "
+               "%llu faster than the loop takes them; %llu timeouts; HighState %llu sent, %llu send errors\n",
                ull(c.received), ull(c.accepted), ull(c.wrong_length), ull(c.bad_crc), ull(c.low_level),
-               ull(c.non_finite), ull(c.illegal_moves), ull(c.refused_not_holder), ull(c.states_sent),
-               ull(c.send_errors));
+               ull(c.non_finite), ull(c.illegal_moves), ull(c.refused_not_holder), ull(c.ring_overflow),
+               ull(c.timeouts), ull(c.states_sent), ull(c.send_errors));
   std::fflush(out);
 }
 

@@ -36,6 +36,8 @@ struct AlienGoCounters {
   std::uint64_t states_sent = 0;
   std::uint64_t send_errors = 0;
   std::uint64_t refused_not_holder = 0;  // the CyberDog2 LCM client held the robot
+  std::uint64_t ring_overflow = 0;       // commands arriving faster than the loop takes them (dropped)
+  std::uint64_t timeouts = 0;            // the client held the robot and fell silent for 0.5 s
 };
 
 class UdpAliengoAdapter final : public CycleObserver {
@@ -96,6 +98,8 @@ class UdpAliengoAdapter final : public CycleObserver {
   double next_count_log_s_ = 0.0;
   std::uint64_t logged_drops_ = 0;
   std::uint64_t logged_not_holder_ = 0;
+  std::uint64_t logged_overflow_ = 0;
+  std::uint64_t logged_timeouts_ = 0;
   // interface thread -> anyone
   std::atomic<std::uint64_t> received_{0}, accepted_{0}, wrong_length_{0}, bad_crc_{0}, low_level_{0}, non_finite_{0},
       illegal_moves_{0}, states_sent_{0}, send_errors_{0};

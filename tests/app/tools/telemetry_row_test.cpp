@@ -38,7 +38,7 @@ TEST(TelemetryRow, TruthAttitudeIsTheRollPitchYawOfTheSimulatorQuaternion) {
     const double yaw = angle(rng);
     GroundTruth truth;
     truth.quat = quat_from_rpy(roll, pitch, yaw);
-    const TelemetryRow row = telemetry_row(CycleRecord{}, truth, HighLevelStatus{}, HighLevelCommand{});
+    const TelemetryRow row = telemetry_row(CycleRecord{}, truth);
     EXPECT_NEAR(row.truth_rpy[0], roll, 1e-9);
     EXPECT_NEAR(row.truth_rpy[1], pitch, 1e-9);
     EXPECT_NEAR(row.truth_rpy[2], yaw, 1e-9);
@@ -85,15 +85,15 @@ TEST(TelemetryRow, CopiesStateTruthAndStatusIntoTheirColumns) {
   truth.quat = quat_from_rpy(0.0, 0.0, M_PI / 2);
   truth.velocity_world = {0.0, 0.5, 0.0};  // along the trunk's x after a quarter turn
   truth.angular_velocity_body = {0.0, 0.0, 0.28};
-  HighLevelStatus status;
+  HighLevelStatus& status = record.high_level.status;
   status.mode = 11;
   status.gait_id = 3;
   status.switch_status = SwitchStatus::Transitioning;
 
-  HighLevelCommand running;
+  HighLevelCommand& running = record.high_level.running_command;
   running.mode = 11;
   running.vel_des = {0.4f, -0.1f, 0.3f};
-  const TelemetryRow row = telemetry_row(record, truth, status, running);
+  const TelemetryRow row = telemetry_row(record, truth);
   const std::vector<std::string> header = split(telemetry_header());
   const std::vector<std::string> fields = split(telemetry_line(row));
   ASSERT_EQ(header.size(), 22u + 2 * kNumJoints + 5);

@@ -48,5 +48,31 @@ TEST(ShmEventLog, AFloodOfRejectedFramesPrintsAFewLinesAndCountsTheRest) {
   std::fclose(file);
 }
 
+// a client whose frames are both rejected by the dozen and ignored (another source has the robot)
+// still reads why it is ignored: the two kinds of line do not share one budget
+TEST(ShmEventLog, TheLineThatAnotherSourceHasTheRobotIsPrintedThroughAFloodOfRejectedFrames) {
+  std::FILE* file = std::tmpfile();
+  {
+    ShmEventLog log(file);
+    for (int i = 0; i < 40; ++i) {
+      ShmEvent event;
+      event.kind = ShmEventKind::FrameRejected;
+      event.time_s = i * 0.001;
+      event.check.fault = ShmCommandFault::NonFinite;
+      log.post(event);
+    }
+    ShmEvent refused;
+    refused.kind = ShmEventKind::Refused;
+    refused.time_s = 0.05;
+    refused.holder = "the motor SDK client";
+    log.post(refused);
+    log.flush();
+    const std::string text = text_of(file);
+    EXPECT_EQ(count_of(text, "command frames ignored: the motor SDK client has the robot"), 1) << text;
+    EXPECT_EQ(log.ignored_lines_written(), 1u);
+  }
+  std::fclose(file);
+}
+
 }  // namespace
 }  // namespace cerebellum

@@ -190,5 +190,33 @@ TEST(UdpAliengoEndpoint, AFloodFromSeveralSendersAtTenKilohertzLeavesTheRobotSta
   EXPECT_LT((e.true_position() - before).head<2>().norm(), 0.05);
 }
 
+// a client streaming as fast as its thread can send (faster than the adapter reads): every
+// command is stamped with the robot time when it is read, so the stream never looks silent, and
+// what the loop cannot take is dropped and counted as this client's own
+TEST(UdpAliengoEndpoint, AStreamFasterThanTheAdapterReadsKeepsItsRobotStandingAndNeverTimesOut) {
+  Endpoint e;
+  const int port = e.adapter.port();
+  std::atomic<bool> flooding{true};
+  std::thread sender([&] {
+    Client client(port);
+    const std::vector<std::uint8_t> stand = high_cmd_bytes(static_cast<int>(AlienGoMode::ForceStand));
+    while (flooding.load()) client.send(stand);
+  });
+  ASSERT_TRUE(e.await_received(1000));
+  // 3 s of robot time (six heartbeat timeouts), paced so the stream meets a running loop
+  for (int i = 0; i < 1500; ++i) {
+    e.mc.loop().tick();
+    std::this_thread::sleep_for(std::chrono::microseconds(500));
+  }
+  flooding.store(false);
+  sender.join();
+  const AlienGoCounters c = e.adapter.counters();
+  EXPECT_EQ(c.timeouts, 0u) << "a streaming client was judged silent";
+  EXPECT_EQ(e.mc.machine().holder(), HighLevelSource::AlienGoUdp);
+  EXPECT_NE(e.mc.machine().status().mode, static_cast<int>(ModeId::PureDamper));
+  EXPECT_GT(e.mc.simulation().ground_truth().position[2], 0.2) << "the robot still stands (truth)";
+  EXPECT_EQ(c.accepted, c.received);
+}
+
 }  // namespace
 }  // namespace cerebellum

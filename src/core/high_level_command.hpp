@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include "core/joint_layout.hpp"
 
@@ -113,6 +114,15 @@ struct HighLevelStatus {
   int ori_error = 0;
   int footpos_error = 0;                     // bit 3 * leg + axis
   JointArray<std::uint32_t> motor_faults{};  // MotorFault bits per motor, as the drivers report them
+};
+
+// what the high-level state machine reports after each tick, in the cycle record (observers read
+// it there, never the machine): the response fields, the command its running mode was entered or
+// last updated with, and the client holding the robot (none before the first command)
+struct HighLevelReport {
+  HighLevelStatus status;
+  HighLevelCommand running_command;
+  std::optional<HighLevelSource> holder;
 };
 
 }  // namespace cerebellum
