@@ -10,9 +10,9 @@
 #include "core/text_file.hpp"
 #include "file_send_lcmt.hpp"
 #include "io/lcm_highlevel/highlevel_wire.hpp"
-#include "io/lcm_highlevel/user_gait_convert.hpp"
-#include "io/lcm_highlevel/user_gait_file.hpp"
-#include "io/lcm_highlevel/user_gait_program.hpp"
+#include "motions/user_gait_convert.hpp"
+#include "motions/user_gait_file.hpp"
+#include "motions/user_gait_program.hpp"
 
 namespace cerebellum {
 namespace {

@@ -2,7 +2,7 @@
 
 #include <stdexcept>
 
-#include "io/lcm_highlevel/motion_gaits.hpp"
+#include "motions/motion_gaits.hpp"
 
 namespace cerebellum {
 
@@ -42,9 +42,11 @@ Mc::Mc(const McConfig& config, McRobot robot)
       faults_(robot.faults),
       modes_(mode_set_config(config)),
       machine_(config.loop_period_s, startup_command(config.startup)),
+      aliengo_(config.aliengo.session),
       arbiter_(machine_),
       loop_(require_backend(backend_), estimator_, arbiter_, config.safety, config.loop_period_s) {
   modes_.add_to(machine_);
+  machine_.add_source_stage(aliengo_);
 }
 
 Simulation& Mc::simulation() {

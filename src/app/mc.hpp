@@ -9,6 +9,7 @@
 #include "app/mc_config.hpp"
 #include "app/mc_robot.hpp"
 #include "estimation/body_state_estimator.hpp"
+#include "modes/aliengo_source.hpp"
 #include "modes/high_level_machine.hpp"
 #include "modes/mode_set.hpp"
 #include "modes/source_arbiter.hpp"
@@ -33,6 +34,8 @@ class Mc {
   // the robot's fault injector, or nullptr when it has none
   FaultInjectingBackend* faults() { return faults_; }
   HighLevelMachine& machine() { return machine_; }
+  // the AlienGo client's stage in the tick: its transport hands decoded HighCmds to it
+  AlienGoSource& aliengo_source() { return aliengo_; }
   // where the high-level interface hands over uploaded user gaits
   UserGaitSlot& user_gait_slot() { return modes_.user_gait_slot(); }
   SourceArbiter& arbiter() { return arbiter_; }
@@ -49,6 +52,7 @@ class Mc {
   BodyStateEstimator estimator_;
   ModeSet modes_;
   HighLevelMachine machine_;
+  AlienGoSource aliengo_;
   SourceArbiter arbiter_;
   ControlLoop loop_;
 };

@@ -73,7 +73,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     }
     std::optional<UdpAliengoAdapter> aliengo;
     if (config.aliengo.enabled) {
-      aliengo.emplace(mc.machine(), config.aliengo, stderr);
+      aliengo.emplace(mc.machine(), mc.aliengo_source(), config.aliengo, stderr);
       if (link_faults_served) aliengo->attach_link_faults(link_faults.aliengo);
       loop.add_observer(*aliengo);
     }

@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <array>
+#include <cstddef>
 #include <cstdint>
 #include <optional>
 
@@ -98,6 +99,10 @@ constexpr const char* source_name(HighLevelSource source) {
                                                  : "the AlienGo UDP client (HighCmd)";
 }
 
+// the most commands of one client the machine takes in one tick: whatever arrives, a tick's input
+// work is bounded (a client sending faster fills only its own ring, where the rest is dropped)
+inline constexpr std::size_t kCommandsPerSourcePerTick = 8;
+
 // a command with the robot time it arrived at and the client it came from
 struct TimedCommand {
   HighLevelCommand command;
@@ -123,6 +128,9 @@ struct HighLevelReport {
   HighLevelStatus status;
   HighLevelCommand running_command;
   std::optional<HighLevelSource> holder;
+  // the AlienGo client's sport mode as HighState reports it: its session's mode once the MC runs
+  // what that mode was translated into
+  int aliengo_mode = 0;
 };
 
 }  // namespace cerebellum

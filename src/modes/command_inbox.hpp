@@ -9,8 +9,8 @@
 #include <atomic>
 #include <cstddef>
 #include <cstdint>
-#include <thread>
 
+#include "core/producer_claim.hpp"
 #include "core/spsc_ring.hpp"
 #include "core/high_level_command.hpp"
 
@@ -28,7 +28,7 @@ class CommandInbox {
  public:
   // commands each source may hand the tick per call of take(); kRingCapacity / kTakePerSourcePerTick
   // ticks is the longest a command can wait in a full ring
-  static constexpr std::size_t kTakePerSourcePerTick = 8;
+  static constexpr std::size_t kTakePerSourcePerTick = kCommandsPerSourcePerTick;
   static constexpr std::size_t kRingCapacity = 64;
   // the most records one call of take() hands out, whatever arrives
   static constexpr std::size_t kTakeBudgetPerTick = kTakePerSourcePerTick * kHighLevelSourceCount;
@@ -68,7 +68,7 @@ class CommandInbox {
 
  private:
   std::array<SpscRing<TimedCommand, kRingCapacity>, kHighLevelSourceCount> rings_;
-  std::array<std::atomic<std::thread::id>, kHighLevelSourceCount> producers_{};
+  std::array<ProducerClaim, kHighLevelSourceCount> producers_;
   std::array<SourceInputCounters, kHighLevelSourceCount> counters_;
   std::size_t first_source_ = 0;  // loop thread
 };

@@ -1,5 +1,7 @@
 #include "modes/high_level_machine.hpp"
 
+#include <stdexcept>
+
 #include "modes/transition_table.hpp"
 #include "modes/watched_modes.hpp"
 #include "safety/body_watch.hpp"
@@ -21,6 +23,25 @@ HighLevelMachine::HighLevelMachine(double tick_period_s, const HighLevelCommand&
     : queue_(tick_period_s), startup_(startup) {}
 
 void HighLevelMachine::add_mode(Mode& mode) { modes_[static_cast<std::size_t>(mode.id())] = &mode; }
+
+void HighLevelMachine::add_source_stage(SourceStage& stage) {
+  if (stage_count_ == stages_.size()) throw std::logic_error("HighLevelMachine: one stage per high-level client");
+  stages_[stage_count_++] = &stage;
+}
+
+template <typename TakeOne>
+void HighLevelMachine::take_commands(const RobotState& state, TakeOne&& take_one) {
+  // the inbox hands out at most kCommandsPerSourcePerTick per client, each stage makes at most as
+  // many: a tick's input work is bounded whatever arrives. What was read before the tick comes
+  // first, then what the stages make of theirs during it (a fixed order: when two clients speak
+  // first at once, the lease goes the same way in every run)
+  inbox_.take(take_one);
+  for (std::size_t i = 0; i < stage_count_; ++i) {
+    SourceStage::Commands made;
+    const std::size_t count = stages_[i]->step(state, status_, made);
+    for (std::size_t k = 0; k < count; ++k) take_one(made[k]);
+  }
+}
 
 bool HighLevelMachine::submit(const HighLevelCommand& command, double received_s, HighLevelSource source) {
   return inbox_.push({command, received_s, source});
@@ -100,7 +121,7 @@ bool HighLevelMachine::take_input(const TimedCommand& input) {
 void HighLevelMachine::observe_while_held(const RobotState& state, const char* holder) {
   // the latch lasts until restart: a new command is refused and never queued; heartbeats only
   // refresh the client's life_count memory
-  inbox_.take([&](const TimedCommand& input) {
+  take_commands(state, [&](const TimedCommand& input) {
     if (!take_input(input)) return;
     refuse(input.command, "a low-level client holds the robot until restart", holder);
     queue_.clear();
@@ -250,7 +271,7 @@ void HighLevelMachine::compute(const RobotState& state, JointCommand& command) {
   // the health protection first: what the client sends from now on meets the protected mode
   if (health_.protecting()) protect(state, health_.protection);
   // client input of this tick (a bounded share of each source), from the client holding the robot
-  inbox_.take([&](const TimedCommand& input) {
+  take_commands(state, [&](const TimedCommand& input) {
     if (holds_lease(input)) take_input(input);
   });
   // a client that went silent: get-down protection; a jump in the air lands first (damping a
@@ -294,6 +315,7 @@ void HighLevelMachine::report(HighLevelReport& report) const {
   report.status = status_;
   report.running_command = running_command_;
   report.holder = lease_.holder();
+  for (std::size_t i = 0; i < stage_count_; ++i) stages_[i]->report(report);
 }
 
 ContactPlan HighLevelMachine::contact_plan() const {

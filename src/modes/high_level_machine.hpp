@@ -14,6 +14,7 @@
 #include "modes/command_queue.hpp"
 #include "modes/mode.hpp"
 #include "modes/source_lease.hpp"
+#include "modes/source_stage.hpp"
 #include "safety/lift_detector.hpp"
 #include "safety/safety_report.hpp"
 
@@ -50,6 +51,8 @@ class HighLevelMachine final : public OwnBehaviour {
 
   // register a mode before the loop starts; the machine starts in the startup command's mode
   void add_mode(Mode& mode);
+  // register a client's stage before the loop starts: its commands are taken every tick
+  void add_source_stage(SourceStage& stage);
 
   // client thread: hand over one received command (lock-free); false when the source's ring is
   // full or another thread already submits for this source (one producer thread per source)
@@ -105,7 +108,13 @@ class HighLevelMachine final : public OwnBehaviour {
   void protect(const RobotState& state, Protection protection);
 
   CommandQueue queue_;
+  // the commands of this tick, from the inbox and the stages, each to take_one(const TimedCommand&)
+  template <typename TakeOne>
+  void take_commands(const RobotState& state, TakeOne&& take_one);
+
   CommandInbox inbox_;
+  std::array<SourceStage*, kHighLevelSourceCount> stages_{};
+  std::size_t stage_count_ = 0;
   SourceLease lease_{CommandQueue::kHeartbeatTimeoutS};
   std::array<Mode*, kMaxModeId + 1> modes_{};
   Mode* current_ = nullptr;

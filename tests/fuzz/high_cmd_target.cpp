@@ -5,7 +5,7 @@
 #include <cstring>
 
 #include "fuzz_target.hpp"
-#include "io/udp_aliengo/aliengo_session.hpp"
+#include "modes/aliengo_session.hpp"
 #include "io/udp_aliengo/aliengo_wire.hpp"
 
 namespace {

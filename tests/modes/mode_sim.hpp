@@ -17,7 +17,7 @@
 #include "estimation/body_state_estimator.hpp"
 #include "modes/high_level_machine.hpp"
 #include "modes/mode_set.hpp"
-#include "io/lcm_highlevel/motion_gaits.hpp"
+#include "motions/motion_gaits.hpp"
 #include "motions/motion_folder.hpp"
 
 namespace cerebellum::testing {

@@ -10,9 +10,9 @@
 #include <sstream>
 #include <string>
 
-#include "io/lcm_highlevel/user_gait_convert.hpp"
-#include "io/lcm_highlevel/user_gait_file.hpp"
-#include "io/lcm_highlevel/user_gait_program.hpp"
+#include "motions/user_gait_convert.hpp"
+#include "motions/user_gait_file.hpp"
+#include "motions/user_gait_program.hpp"
 #include "modes/mode_sim.hpp"
 
 namespace cerebellum {

@@ -20,7 +20,7 @@ int handle_pending(lcm::LCM& lcm, int timeout_ms) {
   int handled = 0;
   if (lcm.handleTimeout(timeout_ms) <= 0) return 0;
   ++handled;
-  while (lcm.handleTimeout(0) > 0) ++handled;
+  while (handled < kMaxPacketsPerHandle && lcm.handleTimeout(0) > 0) ++handled;
   return handled;
 }
 

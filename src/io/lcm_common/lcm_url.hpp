@@ -14,8 +14,13 @@ namespace cerebellum {
 // (most often: no multicast route on this host)
 std::unique_ptr<lcm::LCM> open_lcm_url(const std::string& url, const char* interface_name);
 
-// handles every packet that has arrived: waits up to timeout_ms for the first, then takes the rest
-// without waiting; returns how many were handled
+// the most packets one call of handle_pending takes: an adapter's step must return to its other
+// duties (publishing, logging, seeing that it is asked to stop) whatever a client sends; a flood
+// waits in the socket, where the kernel drops what does not fit
+inline constexpr int kMaxPacketsPerHandle = 64;
+
+// handles the packets that have arrived, at most kMaxPacketsPerHandle: waits up to timeout_ms for
+// the first, then takes the rest without waiting; returns how many were handled
 int handle_pending(lcm::LCM& lcm, int timeout_ms);
 
 }  // namespace cerebellum

@@ -6,6 +6,7 @@
 #include "file_send_lcmt.hpp"
 #include "io/common/motor_error_word.hpp"
 #include "io/wire_floats.hpp"
+#include "motions/user_gait_file.hpp"
 
 namespace cerebellum {
 namespace {

@@ -26,8 +26,6 @@ WireDecode decode_robot_control_cmd(const void* data, std::size_t size, HighLeve
 // the wire message of a command (what a client sends)
 robot_control_cmd_lcmt encode_robot_control_cmd(const HighLevelCommand& command);
 
-// largest user gait file accepted, in bytes of text
-inline constexpr std::size_t kMaxUserGaitFileBytes = 256 * 1024;
 // one raw file_send_lcmt packet; text gets the string without its terminating nul
 WireDecode decode_file_send(const void* data, std::size_t size, std::string& text);
 

@@ -5,8 +5,8 @@
 #include "io/common/wall_clock.hpp"
 #include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_highlevel/highlevel_wire.hpp"
-#include "io/lcm_highlevel/user_gait_file.hpp"
-#include "io/lcm_highlevel/user_gait_program.hpp"
+#include "motions/user_gait_file.hpp"
+#include "motions/user_gait_program.hpp"
 
 namespace cerebellum {
 namespace {

@@ -21,7 +21,7 @@
 #include "io/common/rate_limited_log.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_highlevel/response_schedule.hpp"
-#include "io/lcm_highlevel/user_gait_store.hpp"
+#include "motions/user_gait_store.hpp"
 #include "modes/user_gait.hpp"
 #include "modes/high_level_machine.hpp"
 

@@ -6,7 +6,8 @@
 #include <cstdint>
 
 #include "core/robot_state.hpp"
-#include "io/udp_aliengo/aliengo_command.hpp"
+#include "io/udp_aliengo/aliengo_feedback.hpp"
+#include "modes/aliengo_command.hpp"
 
 namespace cerebellum {
 

@@ -49,12 +49,13 @@ int open_socket(const AlienGoUdpConfig& config, int& bound_port) {
 
 }  // namespace
 
-UdpAliengoAdapter::UdpAliengoAdapter(HighLevelMachine& machine, const AlienGoUdpConfig& config, std::FILE* log)
+UdpAliengoAdapter::UdpAliengoAdapter(const HighLevelMachine& machine, AlienGoSource& source,
+                                     const AlienGoUdpConfig& config, std::FILE* log)
     : machine_(machine),
+      source_(source),
       log_(log),
       port_(config.port),
       socket_(open_socket(config, port_)),
-      session_(config.session),
       refusal_log_(log, kInterfaceName, "HighCmd refusals", kRefusalLinesPerSecond) {
   std::fprintf(log_, "aliengo: HighCmd in, HighState back on UDP %s:%d\n", config.bind_address.c_str(), port_);
   std::fflush(log_);
@@ -67,40 +68,24 @@ UdpAliengoAdapter::~UdpAliengoAdapter() {
 }
 
 void UdpAliengoAdapter::on_cycle(const CycleRecord& record) {
-  const HighLevelStatus& status = record.high_level.status;
-  snapshots_.try_push(Snapshot{record.state, status.mode, status.gait_id, status.order_process_bar});
+  snapshots_.try_push(Snapshot{record.state, record.high_level.aliengo_mode});
 }
 
 void UdpAliengoAdapter::take_newest_snapshot() {
-  while (std::optional<Snapshot> snapshot = snapshots_.try_pop()) {
-    newest_ = *snapshot;
-    has_snapshot_ = true;
-    if (newest_.mc_mode == pending_mc_mode_ && newest_.mc_gait == pending_mc_gait_) reported_mode_ = pending_mode_;
-  }
-}
-
-void UdpAliengoAdapter::submit(const AlienGoStep& step, double now_s) {
-  if (!step.submit) return;
-  machine_.submit(*step.submit, now_s, HighLevelSource::AlienGoUdp);
-  pending_mode_ = session_.mode();
-  pending_mc_mode_ = step.submit->mode;
-  pending_mc_gait_ = step.submit->gait_id;
+  while (std::optional<Snapshot> snapshot = snapshots_.try_pop()) newest_ = *snapshot;
 }
 
 void UdpAliengoAdapter::step() {
   pollfd waiting{socket_, POLLIN, 0};
   ::poll(&waiting, 1, kPollTimeoutMs);
-  take_newest_snapshot();
-  bool any = false;
   for (int read = 0; read < kMaxDatagramsPerStep; ++read) {
-    // each command is stamped with the robot time of the newest cycle when it is read
+    // each answer carries the newest cycle when its datagram is read
     take_newest_snapshot();
     sockaddr_in sender{};
     socklen_t sender_length = sizeof sender;
     const ssize_t got = ::recvfrom(socket_, buffer_.data(), buffer_.size(), MSG_TRUNC,
                                    reinterpret_cast<sockaddr*>(&sender), &sender_length);
     if (got < 0) break;  // EAGAIN: nothing more
-    any = true;
     newest_sender_ = sender;
     const auto size = static_cast<std::size_t>(got);
     // an oversized datagram (MSG_TRUNC) is refused as it is: only what fits is ever copied
@@ -108,13 +93,9 @@ void UdpAliengoAdapter::step() {
                     [&](const std::uint8_t* data, std::size_t length) { handle_datagram(data, length, sender); });
   }
   release_due(link_faults_.load(), wall_seconds(), [&](const std::uint8_t* data, std::size_t length) {
-    any = true;
     handle_datagram(data, length, newest_sender_);
   });
-  if (!any && has_snapshot_) {
-    submit(session_.on_silence(newest_.state, newest_.mc_mode, newest_.mc_progress, newest_.state.time_s),
-           newest_.state.time_s);
-  }
+  log_refusals(wall_seconds());
   log_once_per_second();
 }
 
@@ -132,24 +113,23 @@ void UdpAliengoAdapter::handle_datagram(const std::uint8_t* data, std::size_t si
     case AlienGoDecode::NonFinite: non_finite_.fetch_add(1, std::memory_order_relaxed); return;
   }
   accepted_.fetch_add(1, std::memory_order_relaxed);
-  if (has_snapshot_) {
-    const double now_s = newest_.state.time_s;
-    const AlienGoStep step = session_.on_command(command, newest_.state, newest_.mc_mode, newest_.mc_progress, now_s);
-    submit(step, now_s);
-    if (step.refusal != nullptr) {
-      illegal_moves_.fetch_add(1, std::memory_order_relaxed);
-      char line[160];
-      std::snprintf(line, sizeof line, "HighCmd mode %d refused in mode %d: %s", command.mode, session_.mode(),
-                    step.refusal);
-      refusal_log_.line(wall_seconds(), line);
-    }
-  }
+  // the sport session decides in the tick; a full ring (faster than the tick takes) is counted there
+  source_.push(command);
   answer(sender);
+}
+
+void UdpAliengoAdapter::log_refusals(double now_s) {
+  while (std::optional<AlienGoRefusal> refusal = source_.refusals().try_pop()) {
+    char line[160];
+    std::snprintf(line, sizeof line, "HighCmd mode %d refused in mode %d: %s", refusal->mode, refusal->session_mode,
+                  refusal->reason);
+    refusal_log_.line(now_s, line);
+  }
 }
 
 void UdpAliengoAdapter::answer(const sockaddr_in& sender) {
   std::uint8_t frame[kHighStateBytes];
-  encode_high_state(make_feedback(newest_.state, reported_mode_), frame);
+  encode_high_state(make_feedback(newest_.state, newest_.aliengo_mode), frame);
   const ssize_t sent =
       ::sendto(socket_, frame, sizeof frame, 0, reinterpret_cast<const sockaddr*>(&sender), sizeof sender);
   (sent == static_cast<ssize_t>(sizeof frame) ? states_sent_ : send_errors_).fetch_add(1, std::memory_order_relaxed);
@@ -182,7 +162,7 @@ void UdpAliengoAdapter::log_once_per_second() {
                  "aliengo: %llu HighCmd dropped in the last second: they arrive faster than the loop takes them "
                  "(%d a tick)\n",
                  static_cast<unsigned long long>(c.ring_overflow - logged_overflow_),
-                 static_cast<int>(CommandInbox::kTakePerSourcePerTick));
+                 static_cast<int>(kCommandsPerSourcePerTick));
     logged_overflow_ = c.ring_overflow;
   }
   if (c.timeouts != logged_timeouts_) {
@@ -203,18 +183,19 @@ AlienGoCounters UdpAliengoAdapter::counters() const {
   c.bad_crc = bad_crc_.load();
   c.low_level = low_level_.load();
   c.non_finite = non_finite_.load();
-  c.illegal_moves = illegal_moves_.load();
+  c.illegal_moves = source_.counters().illegal_moves.load();
   c.states_sent = states_sent_.load();
   c.send_errors = send_errors_.load();
   constexpr auto kSource = static_cast<std::size_t>(HighLevelSource::AlienGoUdp);
   c.refused_not_holder = machine_.counters().refused_not_holder[kSource].load();
   c.timeouts = machine_.counters().timeouts[kSource].load();
-  c.ring_overflow = machine_.input_counters(HighLevelSource::AlienGoUdp).ring_overflow.load();
+  c.ring_overflow = source_.counters().ring_overflow.load();
   return c;
 }
 
 void UdpAliengoAdapter::finish(std::FILE* out) {
   thread_.stop();
+  log_refusals(wall_seconds());
   const AlienGoCounters c = counters();
   using ull = unsigned long long;
   std::fprintf(out,

@@ -1,8 +1,8 @@
 // The AlienGo high-level interface on UDP. One thread receives HighCmd datagrams (checked and
-// translated here, dropped ones counted per reason), runs the client's sport session against the
-// newest cycle the loop copied, hands the resulting commands to the HighLevelMachine as the
-// AlienGo source, and answers each datagram's sender with a HighState. The loop thread only
-// copies its state into a ring (on_cycle).
+// decoded here, dropped ones counted per reason), hands each decoded HighCmd to the AlienGo
+// client's stage in the tick (AlienGoSource: the sport session's decisions are taken there), and
+// answers each datagram's sender with a HighState of the newest cycle. The loop thread only copies
+// the cycle's state and reported mode into a ring (on_cycle).
 #pragma once
 
 #include <netinet/in.h>
@@ -18,9 +18,9 @@
 #include "io/common/adapter_thread.hpp"
 #include "io/common/link_faults.hpp"
 #include "io/common/rate_limited_log.hpp"
-#include "io/udp_aliengo/aliengo_session.hpp"
 #include "io/udp_aliengo/aliengo_wire.hpp"
 #include "io/udp_aliengo/udp_aliengo_config.hpp"
+#include "modes/aliengo_source.hpp"
 #include "modes/high_level_machine.hpp"
 
 namespace cerebellum {
@@ -43,7 +43,9 @@ struct AlienGoCounters {
 class UdpAliengoAdapter final : public CycleObserver {
  public:
   // binds the socket and starts the thread; throws std::runtime_error naming the address
-  UdpAliengoAdapter(HighLevelMachine& machine, const AlienGoUdpConfig& config, std::FILE* log);
+  // machine: its per-client counters, for the log; source: where decoded HighCmds go
+  UdpAliengoAdapter(const HighLevelMachine& machine, AlienGoSource& source, const AlienGoUdpConfig& config,
+                    std::FILE* log);
   ~UdpAliengoAdapter() override;
   UdpAliengoAdapter(const UdpAliengoAdapter&) = delete;
   UdpAliengoAdapter& operator=(const UdpAliengoAdapter&) = delete;
@@ -51,7 +53,7 @@ class UdpAliengoAdapter final : public CycleObserver {
   // one is answered to the newest sender)
   void attach_link_faults(LinkFaults& faults) { link_faults_.store(&faults); }
 
-  // loop thread, after the tick: copy the state and the MC's mode for the interface thread
+  // loop thread, after the tick: copy the state and the reported mode for the interface thread
   void on_cycle(const CycleRecord& record) override;
 
   // stops the thread and prints one summary line to out
@@ -63,36 +65,27 @@ class UdpAliengoAdapter final : public CycleObserver {
  private:
   struct Snapshot {
     RobotState state;
-    int mc_mode = 0;
-    int mc_gait = 0;
-    int mc_progress = 0;
+    int aliengo_mode = 0;  // HighState.mode
   };
 
   void step();
   void handle_datagram(const std::uint8_t* data, std::size_t size, const sockaddr_in& sender);
   void answer(const sockaddr_in& sender);
   void take_newest_snapshot();
-  void submit(const AlienGoStep& step, double now_s);
+  void log_refusals(double now_s);
   void log_once_per_second();
 
-  HighLevelMachine& machine_;
+  const HighLevelMachine& machine_;
+  AlienGoSource& source_;
   std::FILE* log_;
   std::atomic<LinkFaults*> link_faults_{nullptr};
   sockaddr_in newest_sender_{};
   int port_ = 0;  // before socket_: opening the socket sets it
   int socket_ = -1;
-  AlienGoSession session_;
   // loop thread -> interface thread
   SpscRing<Snapshot, 8> snapshots_;
   // interface thread
   Snapshot newest_;
-  bool has_snapshot_ = false;
-  // HighState.mode: the session's mode once the MC runs what it was translated into (so a client
-  // sees when its command has been taken, or that it never is while another client holds the robot)
-  int reported_mode_ = 0;
-  int pending_mode_ = 0;
-  int pending_mc_mode_ = -1;
-  int pending_mc_gait_ = -1;
   std::array<std::uint8_t, 2048> buffer_{};
   RateLimitedLog refusal_log_;
   double next_count_log_s_ = 0.0;
@@ -102,7 +95,7 @@ class UdpAliengoAdapter final : public CycleObserver {
   std::uint64_t logged_timeouts_ = 0;
   // interface thread -> anyone
   std::atomic<std::uint64_t> received_{0}, accepted_{0}, wrong_length_{0}, bad_crc_{0}, low_level_{0}, non_finite_{0},
-      illegal_moves_{0}, states_sent_{0}, send_errors_{0};
+      states_sent_{0}, send_errors_{0};
   // last member: started once everything above is built, stopped first
   AdapterThread thread_;
 };

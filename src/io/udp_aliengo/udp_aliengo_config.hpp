@@ -3,7 +3,7 @@
 
 #include <string>
 
-#include "io/udp_aliengo/aliengo_session.hpp"
+#include "modes/aliengo_session.hpp"
 
 namespace cerebellum {
 

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "io/lcm_highlevel/big_endian_writer.hpp"
+#include "motions/user_gait_file.hpp"
 
 namespace cerebellum {
 namespace {

@@ -38,6 +38,8 @@ bool eventually(Condition condition, double timeout_s = 10.0) {
 
 class RawLcmPeer {
  public:
+  static constexpr const char* kMarkerChannel = "test_marker";
+
   RawLcmPeer()
       : command_lcm_("udpm://239.255.76.67:7671?ttl=0"),
         response_lcm_("udpm://239.255.76.67:7670?ttl=0"),
@@ -50,6 +52,7 @@ class RawLcmPeer {
     response_lcm_.subscribe("robot_control_response", &RawLcmPeer::on_message, this);
     response_lcm_.subscribe("motor_temperature", &RawLcmPeer::on_message, this);
     odometry_lcm_.subscribe("global_to_robot", &RawLcmPeer::on_message, this);
+    command_lcm_.subscribe(kMarkerChannel, &RawLcmPeer::on_message, this);
     thread_ = std::thread([this] { receive(); });
   }
   ~RawLcmPeer() {
@@ -64,6 +67,10 @@ class RawLcmPeer {
   void publish_response(const robot_control_response_lcmt& m) { response_lcm_.publish("robot_control_response", &m); }
   void publish_odometry(const localization_lcmt& m) { odometry_lcm_.publish("global_to_robot", &m); }
   void publish_temperature(const danger_states_lcmt& m) { response_lcm_.publish("motor_temperature", &m); }
+  // a packet of the peer's own on the command port: once it is back, everything sent to that port
+  // before it (by any process on this host) has arrived too
+  void publish_marker() { publish(command_lcm_, kMarkerChannel, Bytes{1}); }
+  std::size_t markers_seen() const { return count(kMarkerChannel); }
 
   std::vector<robot_control_cmd_lcmt> commands() const { return decoded<robot_control_cmd_lcmt>("robot_control_cmd"); }
   std::vector<robot_control_response_lcmt> responses() const {

@@ -1,5 +1,6 @@
-// The MC in lockstep with an AlienGo client's sport session streaming a HighCmd every tick (the
-// path a UDP client's commands take, without the socket), judged on the simulator's truth.
+// The MC in lockstep with an AlienGo client streaming a HighCmd every tick into its stage in the
+// tick (the path a UDP client's decoded commands take, without the socket), judged on the
+// simulator's truth.
 #pragma once
 
 #include <Eigen/Geometry>
@@ -7,7 +8,7 @@
 
 #include "app/simulated_robot.hpp"
 #include "backend/sim_fixture.hpp"
-#include "io/udp_aliengo/aliengo_session.hpp"
+#include "modes/aliengo_source.hpp"
 
 namespace cerebellum::testing {
 
@@ -18,20 +19,18 @@ struct AlienGoSim {
   const RobotState& state() { return mc.loop().last_cycle().state; }
   const HighLevelStatus& status() { return mc.machine().status(); }
 
-  // one tick with this HighCmd received just before it
+  // one tick with this HighCmd received just before it; refused: whether the session refused it
   void tick(const AlienGoCommand& command) {
-    const RobotState& s = state();
-    last = session.on_command(command, s, status().mode, status().order_process_bar, s.time_s);
-    if (last.submit) mc.machine().submit(*last.submit, s.time_s, HighLevelSource::AlienGoUdp);
+    const std::uint64_t illegal = mc.aliengo_source().counters().illegal_moves.load();
+    mc.aliengo_source().push(command);
     mc.loop().tick();
+    refused = mc.aliengo_source().counters().illegal_moves.load() > illegal;
   }
   // one tick without a HighCmd (the client is silent)
-  void silent_tick() {
-    const RobotState& s = state();
-    last = session.on_silence(s, status().mode, status().order_process_bar, s.time_s);
-    if (last.submit) mc.machine().submit(*last.submit, s.time_s, HighLevelSource::AlienGoUdp);
-    mc.loop().tick();
-  }
+  void silent_tick() { mc.loop().tick(); }
+  const AlienGoSession& session() { return mc.aliengo_source().session(); }
+  // the mode HighState reports
+  int reported_mode() { return mc.loop().last_cycle().high_level.aliengo_mode; }
   void stream(const AlienGoCommand& command, double seconds) {
     const double end = time_s() + seconds - 1e-9;
     while (time_s() < end) tick(command);
@@ -57,8 +56,7 @@ struct AlienGoSim {
   }
 
   Mc mc;
-  AlienGoSession session;
-  AlienGoStep last;
+  bool refused = false;
 };
 
 inline AlienGoCommand high_cmd(int mode) {

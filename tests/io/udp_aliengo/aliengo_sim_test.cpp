@@ -21,7 +21,7 @@ TEST(AlienGoSim, DampingThenRecoveryStandsTheRobotUpAgain) {
   sim.stream(high_cmd(7), 2.0);
   EXPECT_LT(sim.true_height(), 0.1);
   sim.stream(high_cmd(8), 4.0);
-  EXPECT_EQ(sim.session.mode(), 8);
+  EXPECT_EQ(sim.session().mode(), 8);
   EXPECT_GT(sim.true_height(), 0.2);
   EXPECT_TRUE(sim.all_feet_down());
 }
@@ -33,16 +33,16 @@ TEST(AlienGoSim, IllegalMovesAndPathWalkingLeaveTheRobotWhereItIs) {
   // 0 -> 5 is not a move of the vendor's table; 4 is reserved
   for (int mode : {5, 6, 8, 4}) {
     sim.tick(high_cmd(mode));
-    EXPECT_NE(sim.last.refusal, nullptr) << mode;
+    EXPECT_TRUE(sim.refused) << mode;
     sim.stream(high_cmd(mode), 0.5);
-    EXPECT_EQ(sim.session.mode(), 0) << mode;
+    EXPECT_EQ(sim.session().mode(), 0) << mode;
     EXPECT_GT(sim.true_height(), 0.2) << mode;
   }
   // 8 only after 7: from 1 it stays
   sim.stream(high_cmd(1), 1.0);
   sim.tick(high_cmd(8));
-  EXPECT_NE(sim.last.refusal, nullptr);
-  EXPECT_EQ(sim.session.mode(), 1);
+  EXPECT_TRUE(sim.refused);
+  EXPECT_EQ(sim.session().mode(), 1);
 }
 
 TEST(AlienGoSim, ASilentClientsRobotStopsWalkingStandsLiesDownAndIsDampedLying) {
@@ -69,7 +69,7 @@ TEST(AlienGoSim, ASilentClientsRobotStopsWalkingStandsLiesDownAndIsDampedLying) 
   sim.silence(1.5);
   EXPECT_EQ(sim.status().mode, static_cast<int>(ModeId::PureDamper));
   EXPECT_EQ(sim.status().gait_id, 0);
-  EXPECT_FALSE(sim.session.active());
+  EXPECT_FALSE(sim.session().active());
   sim.silence(2.0);
   EXPECT_LT(sim.true_height(), 0.12);
   EXPECT_LT(std::abs(sim.true_rpy().x()) + std::abs(sim.true_rpy().y()), 0.3);

@@ -102,7 +102,7 @@ class AlienGoWalkTimeline : public ::testing::Test {
 TEST_F(AlienGoWalkTimeline, EveryStageDoesWhatTheExampleAsksOnTheSimulatorsTruth) {
   // 1: force stand, roll 0.7 asked: reached up to the QP stand's documented clamp (0.52)
   until(1950);
-  EXPECT_EQ(sim.session.mode(), 1);
+  EXPECT_EQ(sim.session().mode(), 1);
   EXPECT_EQ(sim.status().mode, static_cast<int>(ModeId::QpStand));
   EXPECT_NEAR(sim.true_rpy().x(), QpStandRanges{}.roll.upper, 0.05);
   until(2950);
@@ -160,7 +160,7 @@ TEST_F(AlienGoWalkTimeline, EveryStageDoesWhatTheExampleAsksOnTheSimulatorsTruth
   until(54950);
   EXPECT_GT(sim.true_height(), 0.2);
   until(56950);
-  EXPECT_EQ(sim.session.mode(), 1);
+  EXPECT_EQ(sim.session().mode(), 1);
   // 3 back to (0, 0)
   until(65000);
   EXPECT_LT(sport_xy().norm(), 0.15) << sport_xy().transpose();

@@ -67,7 +67,7 @@ std::vector<std::uint8_t> high_cmd_bytes(int mode) {
 }
 
 struct Endpoint {
-  Endpoint() : mc(make_simulated_mc(default_config())), adapter(mc.machine(), config(), stderr) {
+  Endpoint() : mc(make_simulated_mc(default_config())), adapter(mc.machine(), mc.aliengo_source(), config(), stderr) {
     mc.loop().add_observer(adapter);
     run(3.0);  // the MC stands up by itself
   }
@@ -173,8 +173,9 @@ TEST(UdpAliengoEndpoint, AFloodFromSeveralSendersAtTenKilohertzLeavesTheRobotSta
       }
     });
   }
-  // 2 s of robot time in lockstep, paced near real time so the flood meets a running loop
-  for (int i = 0; i < 1000; ++i) {
+  // at least 2 s of robot time in lockstep, paced near real time so the flood meets a running
+  // loop, and on until the adapter has read 2000 datagrams of it (however fast this machine is)
+  for (int i = 0; i < 1000 || e.adapter.counters().received < 2000; ++i) {
     e.mc.loop().tick();
     std::this_thread::sleep_for(std::chrono::milliseconds(1));
   }
@@ -182,8 +183,7 @@ TEST(UdpAliengoEndpoint, AFloodFromSeveralSendersAtTenKilohertzLeavesTheRobotSta
   for (auto& t : senders) t.join();
   e.run(0.5);
   const AlienGoCounters c = e.adapter.counters();
-  EXPECT_GT(sent.load(), 4000u);
-  EXPECT_GT(c.received, 1000u) << "the flood was read";
+  EXPECT_GE(sent.load(), c.received);
   EXPECT_EQ(c.accepted + c.wrong_length + c.bad_crc, c.received);
   EXPECT_GT(c.states_sent, 0u);
   EXPECT_GT(e.mc.simulation().ground_truth().position[2], 0.2);
@@ -203,10 +203,12 @@ TEST(UdpAliengoEndpoint, AStreamFasterThanTheAdapterReadsKeepsItsRobotStandingAn
     while (flooding.load()) client.send(stand);
   });
   ASSERT_TRUE(e.await_received(1000));
-  // 3 s of robot time (six heartbeat timeouts), paced so the stream meets a running loop
+  // 3 s of robot time (six heartbeat timeouts); before each tick the adapter has read more of the
+  // stream (so a loaded machine that starves its thread cannot make the client look silent)
   for (int i = 0; i < 1500; ++i) {
+    const std::uint64_t read = e.adapter.counters().received;
+    while (e.adapter.counters().received == read) std::this_thread::sleep_for(std::chrono::microseconds(100));
     e.mc.loop().tick();
-    std::this_thread::sleep_for(std::chrono::microseconds(500));
   }
   flooding.store(false);
   sender.join();

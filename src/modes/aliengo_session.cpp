@@ -1,4 +1,4 @@
-#include "io/udp_aliengo/aliengo_session.hpp"
+#include "modes/aliengo_session.hpp"
 
 #include <algorithm>
 #include <cmath>

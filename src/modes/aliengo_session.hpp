@@ -9,7 +9,7 @@
 
 #include "control/walk_to_position.hpp"
 #include "core/robot_state.hpp"
-#include "io/udp_aliengo/aliengo_command.hpp"
+#include "modes/aliengo_command.hpp"
 #include "core/high_level_command.hpp"
 
 namespace cerebellum {

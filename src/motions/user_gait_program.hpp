@@ -10,7 +10,7 @@
 #include <memory>
 #include <string>
 
-#include "io/lcm_highlevel/user_gait_file.hpp"
+#include "motions/user_gait_file.hpp"
 #include "modes/user_gait.hpp"
 
 namespace cerebellum {

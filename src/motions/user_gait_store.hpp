@@ -6,7 +6,7 @@
 #include <mutex>
 #include <optional>
 
-#include "io/lcm_highlevel/user_gait_file.hpp"
+#include "motions/user_gait_file.hpp"
 
 namespace cerebellum {
 

@@ -1,10 +1,10 @@
 // The human form of gait parameters converted as the seed's example client converts it (section
 // 2.4.3), checked field by field against values worked out by hand.
-#include "io/lcm_highlevel/user_gait_convert.hpp"
+#include "motions/user_gait_convert.hpp"
 
 #include <gtest/gtest.h>
 
-#include "io/lcm_highlevel/user_gait_file.hpp"
+#include "motions/user_gait_file.hpp"
 
 namespace cerebellum {
 namespace {

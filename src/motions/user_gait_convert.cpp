@@ -1,4 +1,4 @@
-#include "io/lcm_highlevel/user_gait_convert.hpp"
+#include "motions/user_gait_convert.hpp"
 
 #include <toml++/toml.h>
 
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <sstream>
 
-#include "io/lcm_highlevel/user_gait_file.hpp"
+#include "motions/user_gait_file.hpp"
 #include "motions/command_step_toml.hpp"
 
 namespace cerebellum {

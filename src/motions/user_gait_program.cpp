@@ -1,4 +1,4 @@
-#include "io/lcm_highlevel/user_gait_program.hpp"
+#include "motions/user_gait_program.hpp"
 
 #include <algorithm>
 #include <cmath>

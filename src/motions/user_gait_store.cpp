@@ -1,4 +1,4 @@
-#include "io/lcm_highlevel/user_gait_store.hpp"
+#include "motions/user_gait_store.hpp"
 
 namespace cerebellum {
 

@@ -1,6 +1,6 @@
 // From uploaded user gait files to the program the MC runs: the packed fields decoded as the
 // reference says (with their fallbacks), and the gaits that are unsafe to run refused with why.
-#include "io/lcm_highlevel/user_gait_program.hpp"
+#include "motions/user_gait_program.hpp"
 
 #include <gtest/gtest.h>
 

@@ -5,6 +5,7 @@
 #pragma once
 
 #include <array>
+#include <cstddef>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -14,6 +15,9 @@
 #include "core/high_level_command.hpp"
 
 namespace cerebellum {
+
+// largest user gait file accepted, in bytes of text (uploaded or read from a folder)
+inline constexpr std::size_t kMaxUserGaitFileBytes = 256 * 1024;
 
 // the first line of each kind of file
 inline constexpr std::string_view kGaitDefinitionHeader = "# Gait Def";

@@ -1,4 +1,4 @@
-#include "io/lcm_highlevel/user_gait_file.hpp"
+#include "motions/user_gait_file.hpp"
 
 #include <gtest/gtest.h>
 

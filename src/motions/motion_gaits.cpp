@@ -1,14 +1,13 @@
-#include "io/lcm_highlevel/motion_gaits.hpp"
+#include "motions/motion_gaits.hpp"
 
 #include <optional>
 #include <stdexcept>
 #include <utility>
 
 #include "core/text_file.hpp"
-#include "io/lcm_highlevel/highlevel_wire.hpp"
-#include "io/lcm_highlevel/user_gait_convert.hpp"
-#include "io/lcm_highlevel/user_gait_file.hpp"
-#include "io/lcm_highlevel/user_gait_program.hpp"
+#include "motions/user_gait_convert.hpp"
+#include "motions/user_gait_file.hpp"
+#include "motions/user_gait_program.hpp"
 
 namespace cerebellum {
 namespace {

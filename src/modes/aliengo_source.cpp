@@ -1,0 +1,49 @@
+#include "modes/aliengo_source.hpp"
+
+namespace cerebellum {
+
+AlienGoSource::AlienGoSource(const AlienGoSessionConfig& config) : session_(config) {}
+
+bool AlienGoSource::push(const AlienGoCommand& command) {
+  if (!producer_.held_by_caller()) {
+    counters_.wrong_thread.fetch_add(1, std::memory_order_relaxed);
+    return false;
+  }
+  if (!ring_.try_push(command)) {
+    counters_.ring_overflow.fetch_add(1, std::memory_order_relaxed);
+    return false;
+  }
+  counters_.handed_over.fetch_add(1, std::memory_order_relaxed);
+  return true;
+}
+
+void AlienGoSource::submit(const AlienGoStep& step, double now_s, Commands& out, std::size_t& made) {
+  if (!step.submit || made == out.size()) return;
+  out[made++] = TimedCommand{*step.submit, now_s, HighLevelSource::AlienGoUdp};
+  pending_mode_ = session_.mode();
+  pending_mc_mode_ = step.submit->mode;
+  pending_mc_gait_ = step.submit->gait_id;
+}
+
+std::size_t AlienGoSource::step(const RobotState& state, const HighLevelStatus& status, Commands& out) {
+  // HighState.mode: the session's mode once the MC runs what it was translated into (so a client
+  // sees when its command has been taken, or that it never is while another client holds the robot)
+  if (status.mode == pending_mc_mode_ && status.gait_id == pending_mc_gait_) reported_mode_ = pending_mode_;
+  const double now_s = state.time_s;
+  std::size_t made = 0;
+  std::size_t taken = 0;
+  for (; taken < out.size(); ++taken) {
+    const std::optional<AlienGoCommand> command = ring_.try_pop();
+    if (!command) break;
+    const AlienGoStep step = session_.on_command(*command, state, status.mode, status.order_process_bar, now_s);
+    if (step.refusal != nullptr) {
+      counters_.illegal_moves.fetch_add(1, std::memory_order_relaxed);
+      refusals_.try_push({command->mode, session_.mode(), step.refusal});
+    }
+    submit(step, now_s, out, made);
+  }
+  if (taken == 0) submit(session_.on_silence(state, status.mode, status.order_process_bar, now_s), now_s, out, made);
+  return made;
+}
+
+}  // namespace cerebellum
