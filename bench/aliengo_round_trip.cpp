@@ -22,7 +22,7 @@
 #include <thread>
 #include <vector>
 
-#include "app/simulated_robot.hpp"
+#include "loop/simulated_robot.hpp"
 #include "io/udp_aliengo/udp_aliengo_adapter.hpp"
 #include "timed_benchmark_main.hpp"
 

@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "app/control_loop.hpp"
+#include "loop/control_loop.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "control/stand_up_controller.hpp"
 #include "core/robot_model.hpp"

@@ -10,7 +10,7 @@
 #include <string>
 #include <vector>
 
-#include "app/control_loop.hpp"
+#include "loop/control_loop.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "control/jump/jump_controller.hpp"
 #include "estimation/body_state_estimator.hpp"

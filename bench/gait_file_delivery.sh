@@ -11,7 +11,7 @@ if [[ "${1:-}" != "--inside" ]]; then
   exec "$root/scripts/netns_run.sh" "$0" --inside "$@"
 fi
 shift
-cerebellum=$root/build/src/app/cerebellum
+cerebellum=$root/build/src/cli/cerebellum
 work=$(mktemp -d)
 trap 'kill -INT $sim 2>/dev/null || true; rm -rf "$work"' EXIT
 sizes=("$@")

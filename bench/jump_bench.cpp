@@ -12,8 +12,8 @@
 #include <string>
 #include <vector>
 
-#include "app/lockstep_client.hpp"
-#include "app/simulated_robot.hpp"
+#include "loop/lockstep_client.hpp"
+#include "loop/simulated_robot.hpp"
 #include "core/orientation.hpp"
 #include "modes/jump_mode.hpp"
 #include "soak_support.hpp"

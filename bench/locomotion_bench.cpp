@@ -18,9 +18,9 @@
 #include <utility>
 #include <vector>
 
-#include "app/lockstep_client.hpp"
+#include "loop/lockstep_client.hpp"
 #include "core/orientation.hpp"
-#include "app/simulated_robot.hpp"
+#include "loop/simulated_robot.hpp"
 #include "soak_support.hpp"
 
 namespace {

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "app/control_loop.hpp"
+#include "loop/control_loop.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "control/stand_up_controller.hpp"
 #include "estimation/kinematic_estimator.hpp"

@@ -20,8 +20,8 @@
 #include <thread>
 #include <vector>
 
-#include "app/mc.hpp"
-#include "app/simulated_robot.hpp"
+#include "loop/mc.hpp"
+#include "loop/simulated_robot.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
 #include "timed_benchmark_main.hpp"

@@ -14,8 +14,8 @@
 #include <string>
 #include <vector>
 
-#include "app/lockstep_client.hpp"
-#include "app/simulated_robot.hpp"
+#include "loop/lockstep_client.hpp"
+#include "loop/simulated_robot.hpp"
 #include "control/locomotion/gait.hpp"
 #include "control/locomotion/gait_table.hpp"
 

@@ -21,8 +21,8 @@
 #include <thread>
 #include <vector>
 
-#include "app/mc.hpp"
-#include "app/simulated_robot.hpp"
+#include "loop/mc.hpp"
+#include "loop/simulated_robot.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_source.hpp"
 #include "lowlevel/lowlevel_sync.h"
 #include "timed_benchmark_main.hpp"

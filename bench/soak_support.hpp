@@ -9,7 +9,7 @@
 #include <string>
 #include <vector>
 
-#include "app/mc_config.hpp"
+#include "loop/mc_config.hpp"
 #include "backend/simulation.hpp"
 #include "control/locomotion/gait.hpp"
 

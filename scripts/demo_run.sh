@@ -7,7 +7,7 @@
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 out=${DEMO_OUT:-$root/build/demo}
-cerebellum=${CEREBELLUM_BIN:-$root/build/src/app/cerebellum}
+cerebellum=${CEREBELLUM_BIN:-$root/build/src/cli/cerebellum}
 tour=${DEMO_TOUR_BIN:-$root/build/examples/highlevel/cerebellum_demo_tour}
 mkdir -p "$out"
 sim=("$cerebellum" sim --config "$root/config/demo.yaml" --speed 1

@@ -23,7 +23,7 @@ elif [[ "${1:-}" == "--two-leg" ]]; then
   kind=two_leg
   shift
 fi
-cerebellum=$root/build/src/app/cerebellum
+cerebellum=$root/build/src/cli/cerebellum
 out=$root/build/${kind}s
 mkdir -p "$out"
 ids=("$@")

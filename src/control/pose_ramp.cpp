@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "control/stand_up_controller.hpp"
+#include "control/joint_ramp.hpp"
 
 namespace cerebellum {
 

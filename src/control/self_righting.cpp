@@ -6,6 +6,7 @@
 
 #include "control/stand_up_controller.hpp"
 #include "core/robot_model.hpp"
+#include "control/joint_ramp.hpp"
 
 namespace cerebellum {
 namespace {
@@ -92,13 +93,7 @@ void SelfRighting::compute(const RobotState& state, JointCommand& command) {
     t -= frame.duration_s;
     from = &frame.q;
   }
-  for (std::size_t i = 0; i < kNumJoints; ++i) {
-    command.q_des[i] = (*from)[i] + ((*to)[i] - (*from)[i]) * fraction;
-    command.qd_des[i] = 0.0;
-    command.kp[i] = config_.kp;
-    command.kd[i] = config_.kd;
-    command.tau_ff[i] = 0.0;
-  }
+  ramp_joints(*from, *to, fraction, config_.kp, config_.kd, command);
 }
 
 }  // namespace cerebellum

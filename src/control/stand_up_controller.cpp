@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "core/robot_model.hpp"
+#include "control/joint_ramp.hpp"
 
 namespace cerebellum {
 
@@ -12,11 +13,6 @@ StandUpConfig default_stand_up_config() {
   config.lying_pose = robot::kLyingPose;
   config.stand_pose = robot::kStandPose;
   return config;
-}
-
-double smooth_step(double fraction) {
-  const double s = std::clamp(fraction, 0.0, 1.0);
-  return 0.5 - 0.5 * std::cos(robot::kPi * s);
 }
 
 StandUpController::StandUpController(const StandUpConfig& config) : config_(config) {}
@@ -35,16 +31,9 @@ void StandUpController::compute(const RobotState& state, JointCommand& command) 
   const bool folding = elapsed < config_.fold_duration_s;
   const double fraction = folding ? smooth_step(elapsed / config_.fold_duration_s)
                                   : smooth_step((elapsed - config_.fold_duration_s) / config_.rise_duration_s);
-  for (std::size_t i = 0; i < kNumJoints; ++i) {
-    const double lying = config_.lying_pose[i % kJointsPerLeg];
-    const double from = folding ? start_q_[i] : lying;
-    const double to = folding ? lying : config_.stand_pose[i % kJointsPerLeg];
-    command.q_des[i] = from + (to - from) * fraction;
-    command.qd_des[i] = 0.0;
-    command.kp[i] = config_.kp;
-    command.kd[i] = config_.kd;
-    command.tau_ff[i] = 0.0;
-  }
+  const JointArray<double> lying = on_every_leg(config_.lying_pose);
+  ramp_joints(folding ? start_q_ : lying, folding ? lying : on_every_leg(config_.stand_pose), fraction, config_.kp,
+              config_.kd, command);
 }
 
 }  // namespace cerebellum

@@ -35,7 +35,4 @@ class StandUpController final : public MotionController {
   double progress_ = 0.0;
 };
 
-// smooth 0..1 ramp with zero slope at both ends
-double smooth_step(double fraction);
-
 }  // namespace cerebellum

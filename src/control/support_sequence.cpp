@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "control/stand_up_controller.hpp"
+#include "control/joint_ramp.hpp"
 
 namespace cerebellum {
 

@@ -70,8 +70,14 @@ inline constexpr double kDriverVoltageHysteresisV = 0.5;  // assumed: a tripped 
 // landing does not trip them, a sagging pack does
 inline constexpr double kDriverBusFilterS = 0.02;
 
+// the joint damping (N m s/rad) of every damping command the MC gives by itself: PureDamper, the
+// guard's replacement command, a lost low-level link, a failed solve, a failed jump or two-leg stand
+inline constexpr double kDampingKd = 4.0;
+
 // whole-body figures the controllers use
 inline constexpr double kTotalMassKg = 8.52;  // body + legs + rotors of the MJCF model
+// the convex MPC's lumped mass and inertia: the model the gaits and the soak were tuned with, not
+// a second figure of the body's mass (kTotalMassKg is that); a change needs a new soak
 inline constexpr double kMpcMassKg = 8.3644;
 inline constexpr std::array<double, 3> kMpcInertiaDiag{0.07641, 0.17843, 0.197579};
 
@@ -96,6 +102,8 @@ inline constexpr double kKneeRotorOffsetM = 0.0342;  // along the thigh, from th
 // the trunk's height above the ground in the default stand (cyberdog2-highlevel.md: mode 3's
 // default height)
 inline constexpr double kStandHeightM = 0.235;
+// the trunk's height while walking, unless a command asks another: the gaits were tuned at it
+inline constexpr double kWalkHeightM = 0.25;
 
 // default poses per leg (abad, hip, knee), SDK convention
 inline constexpr std::array<double, 3> kStandPose{0.0, deg(45.0), deg(-70.0)};

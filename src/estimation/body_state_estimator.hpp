@@ -5,7 +5,7 @@
 #include <array>
 
 #include "core/contact_plan.hpp"
-#include "estimation/ground_plane.hpp"
+#include "estimation/ground_plane_tracker.hpp"
 #include "estimation/kinematic_estimator.hpp"
 #include "estimation/linear_kalman_filter.hpp"
 

@@ -52,8 +52,6 @@ class AlienGoSession {
   bool active() const { return active_; }
   // the AlienGo mode echoed in HighState
   int mode() const { return static_cast<int>(mode_); }
-  // the mode-3 target in the world (odometry) frame, for tests and logs
-  const Pose2d& position_target_world() const { return target_world_; }
 
  private:
   void start(const RobotState& state);

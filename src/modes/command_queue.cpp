@@ -3,6 +3,9 @@
 #include <cmath>
 
 #include "modes/transition_table.hpp"
+#include "control/locomotion/gait_table.hpp"
+#include "modes/pose_control_mode.hpp"
+#include "modes/qp_stand_mode.hpp"
 
 namespace cerebellum {
 namespace {
@@ -29,12 +32,12 @@ HighLevelCommand hold_command_after(const HighLevelCommand& last) {
   hold.duration = 0;
   hold.vel_des = {};
   if (last.mode == static_cast<int>(ModeId::QpStand)) {
-    hold.gait_id = 1;
+    hold.gait_id = kQpStandIncrementalGait;
   } else if (last.mode == static_cast<int>(ModeId::Locomotion)) {
-    hold.gait_id = last.gait_id <= 30 ? 1 : 31;
+    hold.gait_id = resting_gait_of(last.gait_id);
   } else {
     hold.mode = static_cast<int>(ModeId::PoseControl);
-    hold.gait_id = 3;
+    hold.gait_id = kPoseHoldGait;
   }
   // the reference's pose hold may not follow every mode (7 -> 21 is BAN_TRANS): such a mode
   // holds itself instead of reporting a refusal of a command nobody sent

@@ -80,8 +80,6 @@ class HighLevelMachine final : public OwnBehaviour {
   const CommandCounters& counters() const { return counters_; }
   // the command the running mode was entered or last updated with (loop thread)
   const HighLevelCommand& running_command() const { return running_command_; }
-  // what the body watch found this tick (loop thread)
-  const SafetyReport& body_report() const { return body_report_; }
   // the client holding the robot (loop thread); none before the first command and after the
   // holder has been silent past the heartbeat timeout
   std::optional<HighLevelSource> holder() const { return lease_.holder(); }

@@ -2,6 +2,7 @@
 
 #include "control/stand_up_controller.hpp"
 #include "core/robot_model.hpp"
+#include "control/joint_ramp.hpp"
 
 namespace cerebellum {
 
@@ -24,14 +25,7 @@ void LiftedMode::enter(const RobotState& state, const HighLevelCommand&) {
 
 void LiftedMode::run(const RobotState& state, JointCommand& command) {
   const double s = smooth_step((state.time_s - start_time_s_) / config_.move_duration_s);
-  for (std::size_t i = 0; i < kNumJoints; ++i) {
-    const double target = config_.hold_pose[i % kJointsPerLeg];
-    command.q_des[i] = start_q_[i] + (target - start_q_[i]) * s;
-    command.qd_des[i] = 0.0;
-    command.kp[i] = config_.kp;
-    command.kd[i] = config_.kd;
-    command.tau_ff[i] = 0.0;
-  }
+  ramp_joints(start_q_, on_every_leg(config_.hold_pose), s, config_.kp, config_.kd, command);
 }
 
 }  // namespace cerebellum

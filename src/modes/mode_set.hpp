@@ -5,6 +5,7 @@
 #include <memory>
 #include <string>
 
+#include "core/robot_model.hpp"
 #include "control/stand_up_controller.hpp"
 #include "modes/high_level_machine.hpp"
 #include "modes/jump_mode.hpp"
@@ -29,7 +30,7 @@ namespace cerebellum {
 
 struct ModeSetConfig {
   double loop_period_s = 0.002;
-  double damping_kd = 4.0;  // PureDamper's joint damping, and the walking gaits' when the MPC fails
+  double damping_kd = robot::kDampingKd;  // PureDamper's joint damping, and the walking gaits' when the MPC fails
   StandUpConfig stand_up = default_stand_up_config();
   LocomotionStand locomotion_stand = LocomotionStand::Mpc;
   // mode 62's named motions (motions/ reads them from files); every step is checked by the mode
@@ -57,9 +58,6 @@ class ModeSet {
   const MotionMode& motion() const { return motion_; }
   const UserGaitRunner& user_gait() const { return user_gait_; }
   const JumpMode& jump() const { return jump_; }
-  const JumpMode& force_jump() const { return force_jump_; }
-  // nullptr without a robot model
-  const TwoLegStandMode* two_leg_stand() const { return two_leg_stand_.get(); }
   // where the high-level interface hands over a newly uploaded user gait (any thread)
   UserGaitSlot& user_gait_slot() { return user_gait_slot_; }
   // mode 11's gaits by id

@@ -4,6 +4,7 @@
 #include <cmath>
 
 #include "control/locomotion/gait_table.hpp"
+#include "modes/pose_control_mode.hpp"
 
 namespace cerebellum {
 namespace {
@@ -69,7 +70,7 @@ HighLevelCommand MotionMode::plan_step(std::size_t i) const {
   // the stand pose: level, at the stand height, four feet down
   HighLevelCommand stand;
   stand.mode = static_cast<int>(ModeId::PoseControl);
-  stand.gait_id = 5;
+  stand.gait_id = kPoseAbsoluteHeightGait;
   stand.pos_des[2] = static_cast<float>(return_height_m_);
   stand.duration = config_.final_stand_ms;
   return stand;

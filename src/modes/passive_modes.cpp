@@ -5,6 +5,7 @@
 
 #include "core/robot_model.hpp"
 #include "safety/damping_command.hpp"
+#include "control/joint_ramp.hpp"
 
 namespace cerebellum {
 
@@ -54,12 +55,7 @@ void PureDamperMode::run(const RobotState& state, JointCommand& command) {
     return;
   }
   const double s = smooth_step(elapsed_s_ / config_.lie_down_duration_s);
-  for (std::size_t i = 0; i < kNumJoints; ++i) {
-    const double target = config_.lying_pose[i % kJointsPerLeg];
-    command.q_des[i] = start_q_[i] + (target - start_q_[i]) * s;
-    command.kp[i] = config_.lie_down_kp;
-    command.kd[i] = config_.lie_down_kd;
-  }
+  ramp_joints(start_q_, on_every_leg(config_.lying_pose), s, config_.lie_down_kp, config_.lie_down_kd, command);
 }
 
 int PureDamperMode::progress_percent() const {

@@ -3,6 +3,7 @@
 
 #include <array>
 
+#include "core/robot_model.hpp"
 #include "control/stand_up_controller.hpp"
 #include "modes/mode.hpp"
 
@@ -21,7 +22,7 @@ class OffMode final : public Mode {
 };
 
 struct PureDamperConfig {
-  double damping_kd = 4.0;           // gait 0: joint damping, the robot sinks by itself
+  double damping_kd = robot::kDampingKd;           // gait 0: joint damping, the robot sinks by itself
   double lie_down_duration_s = 1.5;  // gait 1: joints driven to the lying pose over this time
   double lie_down_kp = 40.0;
   double lie_down_kd = 2.0;

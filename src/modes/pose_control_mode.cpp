@@ -54,7 +54,7 @@ BodyPose PoseControlMode::goal_pose(const HighLevelCommand& command) {
   const Eigen::Vector2d stand_xy = com_xy - (rotation_from_rpy(goal.rpy) * config_.com_in_body).head<2>();
   double height = base_height_m_;
   Eigen::Vector2d offset = Eigen::Vector2d::Zero();
-  if (command.gait_id == 5) {
+  if (command.gait_id == kPoseAbsoluteHeightGait) {
     height = base_height_m_ = r.height.clamp(command.pos_des[2]);
   } else {
     offset = {r.offset_x.clamp(command.pos_des[0]), r.offset_y.clamp(command.pos_des[1])};

@@ -19,6 +19,10 @@
 
 namespace cerebellum {
 
+// mode 21's gaits that other code asks for: hold the pose reached so far; the absolute height
+inline constexpr int kPoseHoldGait = 3;
+inline constexpr int kPoseAbsoluteHeightGait = 5;
+
 struct PoseControlConfig {
   PoseControlRanges ranges;
   FootOffsetRanges foot_offset;

@@ -10,6 +10,9 @@
 
 namespace cerebellum {
 
+// mode 3's gait that moves to its target in small increments (what a held force pose runs)
+inline constexpr int kQpStandIncrementalGait = 1;
+
 struct QpStandModeConfig {
   QpStandConfig stand;
   QpStandRanges ranges;

@@ -6,6 +6,7 @@
 
 #include <memory>
 
+#include "core/robot_model.hpp"
 #include "control/locomotion/locomotion_controller.hpp"
 #include "modes/locomotion_gait.hpp"
 
@@ -13,7 +14,7 @@ namespace cerebellum {
 
 struct WalkingGaitsConfig {
   LocomotionConfig locomotion;
-  double failure_damping_kd = 4.0;
+  double failure_damping_kd = robot::kDampingKd;
 };
 
 // the locomotion controller's target for a (clamped) mode-11 command; a step height below 1 cm

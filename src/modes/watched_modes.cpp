@@ -1,5 +1,8 @@
 #include "modes/watched_modes.hpp"
 
+#include "control/locomotion/gait_table.hpp"
+#include "modes/qp_stand_mode.hpp"
+
 namespace cerebellum {
 
 HighLevelCommand command_after_landing(const HighLevelCommand& lifted_from) {
@@ -8,13 +11,13 @@ HighLevelCommand command_after_landing(const HighLevelCommand& lifted_from) {
   command.vel_des = {};
   command.contact = 0x0F;
   if (lifted_from.mode == static_cast<int>(ModeId::Locomotion)) {
-    command.gait_id = lifted_from.gait_id <= 30 ? 1 : 31;
+    command.gait_id = resting_gait_of(lifted_from.gait_id);
   } else if (lifted_from.mode == static_cast<int>(ModeId::QpStand)) {
-    command.gait_id = 1;
+    command.gait_id = kQpStandIncrementalGait;
   } else {
     command = HighLevelCommand{};
     command.mode = static_cast<int>(ModeId::QpStand);
-    command.gait_id = 1;
+    command.gait_id = kQpStandIncrementalGait;
   }
   return command;
 }

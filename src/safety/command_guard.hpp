@@ -2,6 +2,7 @@
 // robot's limits and replaces it with damping when it (or the state) cannot be trusted.
 #pragma once
 
+#include "core/robot_model.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "safety/command_limits.hpp"
@@ -12,7 +13,7 @@ namespace cerebellum {
 
 struct GuardLimits {
   CommandLimits command;
-  double damping_kd = 4.0;  // kd of the replacement command
+  double damping_kd = robot::kDampingKd;  // kd of the replacement command
   HealthLimits health;
 };
 

@@ -8,7 +8,7 @@
 
 #include <Eigen/Geometry>
 
-#include "app/control_loop.hpp"
+#include "loop/control_loop.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "estimation/kinematic_estimator.hpp"
 

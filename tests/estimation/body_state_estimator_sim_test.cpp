@@ -7,7 +7,7 @@
 #include <cmath>
 #include <string>
 
-#include "app/control_loop.hpp"
+#include "loop/control_loop.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "control/stand_up_controller.hpp"
 #include "estimation/body_state_estimator.hpp"

@@ -6,7 +6,7 @@
 #include <fstream>
 #include <string>
 
-#include "app/mc_config.hpp"
+#include "loop/mc_config.hpp"
 #include "fuzz_target.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <string>
 
-#include "app/fault_scenario_file.hpp"
+#include "cli/fault_scenario_file.hpp"
 #include "fuzz_target.hpp"
 
 extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {

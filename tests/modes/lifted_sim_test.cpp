@@ -14,7 +14,7 @@ namespace {
 using testing::command;
 using testing::ModeSim;
 
-constexpr double kWeightN = 8.52 * 9.81;
+constexpr double kWeightN = robot::kTotalMassKg * robot::kGravityMPerS2;
 
 // a hand that holds the trunk at a height (spring and damper on the simulator's truth) and lets go
 // once it has put the robot down below the height it is aiming for

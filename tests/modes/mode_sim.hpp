@@ -10,7 +10,7 @@
 #include <mujoco/mujoco.h>
 #include <string>
 
-#include "app/control_loop.hpp"
+#include "loop/control_loop.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "backend/sim_fixture.hpp"
 #include "control/stand_up_controller.hpp"

@@ -11,6 +11,7 @@
 #include "core/leg_kinematics.hpp"
 #include "core/robot_model.hpp"
 #include "safety/damping_command.hpp"
+#include "control/joint_ramp.hpp"
 
 namespace cerebellum {
 namespace {

@@ -12,6 +12,7 @@
 
 #include <Eigen/Core>
 
+#include "core/robot_model.hpp"
 #include "control/force_distribution.hpp"
 #include "control/jump/jump_plan.hpp"
 #include "control/qp_stand.hpp"
@@ -63,7 +64,7 @@ struct JumpControllerConfig {
   // a landing past these has failed: damping
   double failed_tilt_rad = 0.8;
   double failed_height_m = 0.1;
-  double damping_kd = 4.0;
+  double damping_kd = robot::kDampingKd;
 };
 
 JumpControllerConfig default_jump_controller_config();

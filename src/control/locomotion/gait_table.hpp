@@ -44,6 +44,13 @@ inline constexpr int kPassiveTrotGaitId = 4;
 // the uploaded user gait (user_gait_file), run by mode 11 and mode 62 with this gait id
 inline constexpr int kUserGaitId = 110;
 
+// the stand a walking gait comes to rest in when its timed entry ends or a lifted robot is set
+// down (cyberdog2-highlevel.md): gait 1 after gaits up to 30, gait 31 after the others
+inline constexpr int kLastGaitRestingInStandGaitId = 30;
+constexpr int resting_gait_of(int walking_gait_id) {
+  return walking_gait_id <= kLastGaitRestingInStandGaitId ? kStandGaitId : kStandWithoutPushRecoveryGaitId;
+}
+
 struct GaitSpec {
   int id;
   const char* name;

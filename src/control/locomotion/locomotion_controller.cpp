@@ -162,13 +162,14 @@ void LocomotionController::post_mpc(const RobotState& state) {
     x << roll_ref, pitch_ref, yaw_k, position.x(), position.y(), ground_z + target_.height_m + height_correction_m_,
         0.0, 0.0, velocity_.z(), velocity_world.x(), velocity_world.y(), 0.0, -robot::kGravityMPerS2;
   }
-  const Eigen::Vector3d com_world = state.position_world + body_to_world * config_.com_offset_body;
+  const Eigen::Vector3d lever_origin_world = state.position_world + body_to_world * config_.mpc_lever_arm_origin_body;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     // a foot in the air pushes next from where it will land
     const LegPhase phase = scheduler_.leg_phase(leg);
     in.foot_from_com[leg] =
-        phase.stance ? Eigen::Vector3d(body_to_world * (state.foot_position_body[leg] - config_.com_offset_body))
-                     : Eigen::Vector3d(foothold_world(leg, phase, state) - com_world);
+        phase.stance
+            ? Eigen::Vector3d(body_to_world * (state.foot_position_body[leg] - config_.mpc_lever_arm_origin_body))
+            : Eigen::Vector3d(foothold_world(leg, phase, state) - lever_origin_world);
   }
   in.friction = user.friction;
   worker_.post(in);

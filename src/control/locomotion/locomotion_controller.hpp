@@ -25,7 +25,7 @@ struct LocomotionConfig {
   int ticks_per_segment = 15;  // kGaitSegmentS at 500 Hz (the MC sets it from its loop period)
   ConvexMpcConfig mpc;
   FootholdConfig foothold;
-  double default_height_m = 0.25;
+  double default_height_m = robot::kWalkHeightM;
   double hop_step_height_fraction = 0.3;  // pronk: share of the step height the feet are lifted
   double swing_kp = 40.0;                 // joint gains tracking the swing trajectory (motor PD at 1 kHz)
   double swing_kd = 1.0;
@@ -71,10 +71,12 @@ struct LocomotionConfig {
   double max_centripetal_accel_m_s2 = 1.5;
   double vertical_leg_half_width_m = robot::kHipY + robot::kAbadLength;  // value bit1 = 1: feet under the hips
   double pigeon_toe_half_width_m = 0.11;  // value bit1 = 0: energy-saving narrower stance
-  // the MPC's lever arms: tuned, not the whole body's centre (stand_com_in_body(), 0.0064 m), with
-  // which a user gait's end stood pitched 0.053 rad and gait 1's sideways catch was lost before
-  // the stands held position; the walking gaits and the soak were tuned with 0.013 m
-  Eigen::Vector3d com_offset_body{0.013, 0.0, 0.0};
+  // the point the MPC takes its lever arms from (body frame): a tuned point, NOT the centre of
+  // mass. The centre of mass has one home, stand_com_in_body() (leg_gravity: 0.0064 m ahead of the
+  // trunk origin), which the stands and the footholds use; with it as the MPC's origin a user
+  // gait's end stood pitched 0.053 rad and gait 1's sideways catch was lost before the stands held
+  // position. The walking gaits and the soak were tuned with 0.013 m (a change needs a new soak)
+  Eigen::Vector3d mpc_lever_arm_origin_body{0.013, 0.0, 0.0};
   int failed_solves_to_give_up = 3;
   // swing feet are kept this far inside the interface's foot workspace (safety/body_watch)
   double workspace_margin_m = 0.02;
@@ -94,7 +96,7 @@ struct UserStepTargets {
 struct LocomotionTarget {
   GaitPattern gait;
   Eigen::Vector3d velocity{0, 0, 0};  // vx, vy (body frame, m/s), yaw rate (rad/s); clamped to the gait
-  double height_m = 0.25;
+  double height_m = robot::kWalkHeightM;
   double pitch_rad = 0.0;
   double step_height_front_m = kDefaultStepHeightM;
   double step_height_rear_m = kDefaultStepHeightM;

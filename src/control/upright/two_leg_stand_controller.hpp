@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/robot_model.hpp"
 #include "control/qp_stand.hpp"
 #include "control/upright/upright_balance_design.hpp"
 #include "control/upright/upright_state.hpp"
@@ -48,7 +49,7 @@ struct TwoLegStandConfig {
   double front_press_m = 0.005;
   // the balance's feedback is low-passed here (Hz): unfiltered, sensor noise made it chatter
   double feedback_cutoff_hz = 50.0;  // the crouch's front feet this far into the ground: they bear on it
-  double damping_kd = 4.0;
+  double damping_kd = robot::kDampingKd;
   QpStandConfig stand;
 };
 
@@ -95,7 +96,6 @@ class TwoLegStandController {
   // the reference pose at progress s: interpolated position, the orientation by slerp
   void reference_at(double s, UprightPosition& position) const;
   void balance(const RobotState& state, double s, double s_rate_per_s, JointCommand& command);
-  double rise_share(double t) const;
   double total_s() const;
 
   TwoLegStandConfig config_;

@@ -24,7 +24,7 @@ struct MotorSdkParameters {
   double lost_after_s = 0.500;      // bit1 beyond this gap
   double lie_before_clear_s = 2.0;  // bit1 stays at least this long before zero frames clear it
   // while bit1 is set: joint damping for a while, then limp (the firmware's variant)
-  double lost_damping_kd = 4.0;
+  double lost_damping_kd = robot::kDampingKd;
   double lost_damping_duration_s = 2.5;
   // |kp|, |kd|, |tau_des| at or below this everywhere make an all-zero (activation) frame
   double zero_tolerance = 0.001;

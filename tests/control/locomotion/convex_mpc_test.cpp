@@ -69,7 +69,7 @@ TEST(ConvexMpc, ContinuousModelHasGravityMassAndYawRotation) {
   Eigen::Matrix<double, kSrbStates, 12> b;
   ConvexMpc::continuous_dynamics(ConvexMpcConfig{}, 1.5707963267948966, standing_feet(), a, b);
   EXPECT_EQ(a(11, 12), 1.0);
-  EXPECT_NEAR(b(9, 0), 1.0 / 8.3644, 1e-12);
+  EXPECT_NEAR(b(9, 0), 1.0 / robot::kMpcMassKg, 1e-12);
   // yaw 90 deg: world wx drives pitch rate with sign -1 through Rz^T
   EXPECT_NEAR(a(1, 6), -1.0, 1e-12);
   // torque of a vertical force at the FR foot about x: r_y * fz / I_xx' (yaw 90 deg swaps x and y inertia)
@@ -89,7 +89,7 @@ TEST(ConvexMpc, StandingStillCarriesTheWeightInsideTheFrictionCone) {
     EXPECT_LE(std::abs(f.y()), 0.4 * f.z() + 1e-6);
   }
   // the first step carries the weight (the finite horizon makes it lean a little above m g)
-  EXPECT_NEAR(total_z, 8.3644 * 9.81, 0.1 * 8.3644 * 9.81);
+  EXPECT_NEAR(total_z, robot::kMpcMassKg * 9.81, 0.1 * robot::kMpcMassKg * 9.81);
   // symmetric left/right; the rear feet, nearer the COM, carry more than the front ones
   EXPECT_NEAR(out.forces[0].z(), out.forces[1].z(), 1e-6);
   EXPECT_GT(out.forces[2].z(), out.forces[0].z());
@@ -102,7 +102,7 @@ TEST(ConvexMpc, SolutionCostsNoMoreThanStaticEquilibrium) {
   ASSERT_EQ(out.status, qp::QpStatus::Solved);
   const qp::QpProblem& p = mpc->problem();
   const Eigen::MatrixXd h = p.hessian.selfadjointView<Eigen::Lower>();
-  const double weight = 8.3644 * 9.81;
+  const double weight = robot::kMpcMassKg * 9.81;
   const double front = weight * 0.15 / 0.33 / 2, rear = weight * 0.18 / 0.33 / 2;
   Eigen::VectorXd equilibrium = Eigen::VectorXd::Zero(h.rows());
   for (int k = 0; k < kMpcHorizon; ++k) {

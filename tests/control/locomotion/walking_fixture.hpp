@@ -7,7 +7,7 @@
 #include <memory>
 #include <string>
 
-#include "app/control_loop.hpp"
+#include "loop/control_loop.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "control/locomotion/locomotion_controller.hpp"
 #include "control/qp/goldfarb_idnani_solver.hpp"

@@ -1,5 +1,5 @@
 // Stands the simulated robot up with the installed libraries; prints the final trunk height.
-#include <cerebellum/app/control_loop.hpp>
+#include <cerebellum/loop/control_loop.hpp>
 #include <cerebellum/backend/mujoco_backend.hpp>
 #include <cerebellum/control/stand_up_controller.hpp>
 #include <cerebellum/estimation/kinematic_estimator.hpp>

@@ -8,8 +8,8 @@
 #include <cstdio>
 #include <thread>
 
-#include "app/mc.hpp"
-#include "app/simulated_robot.hpp"
+#include "loop/mc.hpp"
+#include "loop/simulated_robot.hpp"
 #include "io/lcm_highlevel/raw_lcm_peer.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <string>
 
-#include "app/mc_config.hpp"
+#include "loop/mc_config.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 
 namespace cerebellum {

@@ -12,8 +12,8 @@
 #include <utility>
 #include <vector>
 
-#include "app/mc.hpp"
-#include "app/simulated_robot.hpp"
+#include "loop/mc.hpp"
+#include "loop/simulated_robot.hpp"
 #include "io/lcm_highlevel/big_endian_writer.hpp"
 #include "io/lcm_highlevel/raw_lcm_peer.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <string>
 
-#include "app/mc_config.hpp"
+#include "loop/mc_config.hpp"
 #include "lowlevel/motor_sdk/motor_sdk_user_parameters.hpp"
 
 namespace cerebellum {

@@ -6,8 +6,8 @@
 #include <algorithm>
 #include <array>
 
-#include "app/mc.hpp"
-#include "app/simulated_robot.hpp"
+#include "loop/mc.hpp"
+#include "loop/simulated_robot.hpp"
 #include "core/robot_model.hpp"
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
 #include "lowlevel/motor_sdk/motor_sdk_source.hpp"

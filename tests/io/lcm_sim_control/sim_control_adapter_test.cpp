@@ -11,8 +11,8 @@
 #include <thread>
 #include <vector>
 
-#include "app/mc.hpp"
-#include "app/simulated_robot.hpp"
+#include "loop/mc.hpp"
+#include "loop/simulated_robot.hpp"
 #include "io/lcm_sim_control/sim_control_adapter.hpp"
 #include "sim_command_lcmt.hpp"
 #include "sim_command_result_lcmt.hpp"

@@ -9,8 +9,8 @@
 #include <stdexcept>
 #include <vector>
 
-#include "app/mc.hpp"
-#include "app/simulated_robot.hpp"
+#include "loop/mc.hpp"
+#include "loop/simulated_robot.hpp"
 #include "io/lcm_sim_truth/sim_truth_publisher.hpp"
 #include "sim_truth_lcmt.hpp"
 

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <string>
 
-#include "app/mc_config.hpp"
+#include "loop/mc_config.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
 #include "io/shm_lowlevel/shm_test_names.hpp"
 

@@ -9,8 +9,8 @@
 #include <memory>
 #include <string>
 
-#include "app/mc.hpp"
-#include "app/simulated_robot.hpp"
+#include "loop/mc.hpp"
+#include "loop/simulated_robot.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_source.hpp"
 #include "io/shm_lowlevel/shm_test_client.hpp"
 #include "io/shm_lowlevel/shm_test_names.hpp"

@@ -96,7 +96,7 @@ TEST(ShmProcess, ExampleStandsTheSimulatedRobotFromAnotherProcess) {
                              << "shm:\n  enabled: true\n  name_prefix: " << prefix << "\n";
 
   Child sim(
-      {CEREBELLUM_BINARY_DIR "/src/app/cerebellum", "sim", "--speed", "1", "--duration", "6", "--config", config_path},
+      {CEREBELLUM_BINARY_DIR "/src/cli/cerebellum", "sim", "--speed", "1", "--duration", "6", "--config", config_path},
       sim_out);
   ASSERT_TRUE(sim.spawned());
   ASSERT_TRUE(wait_for_text(sim_out, "cerebellum ready", std::chrono::seconds(30))) << read_file(sim_out);

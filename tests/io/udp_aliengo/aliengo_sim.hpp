@@ -6,7 +6,7 @@
 #include <Eigen/Geometry>
 #include <cmath>
 
-#include "app/simulated_robot.hpp"
+#include "loop/simulated_robot.hpp"
 #include "backend/sim_fixture.hpp"
 #include "modes/aliengo_source.hpp"
 

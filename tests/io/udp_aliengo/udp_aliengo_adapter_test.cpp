@@ -18,7 +18,7 @@
 #include <thread>
 #include <vector>
 
-#include "app/simulated_robot.hpp"
+#include "loop/simulated_robot.hpp"
 #include "io/udp_aliengo/udp_aliengo_adapter.hpp"
 #include "unitree_legged_sdk/comm.h"
 

@@ -1,0 +1,224 @@
+#include "loop/mc_config.hpp"
+
+#include <yaml-cpp/yaml.h>
+
+#include <cmath>
+#include <filesystem>
+#include <set>
+#include <sstream>
+
+#include "loop/yaml_section.hpp"
+#include "core/robot_model.hpp"
+#include "io/lcm_common/lcm_network.hpp"
+#include "lowlevel/motor_sdk/motor_sdk_user_parameters.hpp"
+
+namespace cerebellum {
+namespace {
+
+namespace fs = std::filesystem;
+
+std::string find_default_model() {
+  for (const char* dir : {CEREBELLUM_SOURCE_MODEL_DIR, CEREBELLUM_INSTALL_MODEL_DIR}) {
+    const fs::path candidate = fs::path(dir) / "cyberdog2.xml";
+    if (fs::is_regular_file(candidate)) return candidate.string();
+  }
+  return (fs::path(CEREBELLUM_INSTALL_MODEL_DIR) / "cyberdog2.xml").string();
+}
+
+std::string find_default_motions() {
+  for (const char* dir : {CEREBELLUM_SOURCE_MOTION_DIR, CEREBELLUM_INSTALL_MOTION_DIR}) {
+    if (fs::is_directory(dir)) return dir;
+  }
+  return CEREBELLUM_INSTALL_MOTION_DIR;
+}
+
+void read_motions(const SectionReader& section, const fs::path& base_dir, MotionFolders& motions) {
+  for (const auto& [key, folder] : {std::pair<const char*, std::string*>{"folder", &motions.folder},
+                                    std::pair<const char*, std::string*>{"user_folder", &motions.user_folder}}) {
+    std::string given;
+    section.text(key, given);
+    if (given.empty()) continue;
+    const fs::path path(given);
+    *folder = (path.is_absolute() ? path : base_dir / path).lexically_normal().string();
+    if (!fs::is_directory(*folder)) section.fail(std::string("motions.") + key, "is not a folder: " + *folder);
+  }
+}
+
+void read_robot(const SectionReader& section, const fs::path& base_dir, MujocoBackendConfig& robot) {
+  std::string model;
+  section.path("model", model);
+  if (!model.empty()) {
+    const fs::path path(model);
+    robot.model_path = (path.is_absolute() ? path : base_dir / path).lexically_normal().string();
+  }
+  section.text("initial_pose", robot.initial_keyframe, {"lying", "stand"});
+  section.number("initial_height_m", robot.initial_height_m, 0.05, 2.0);
+  section.flag("sensor_noise", robot.noise.enabled);
+  section.unsigned_integer("seed", robot.noise.seed);
+}
+
+void read_shm(const SectionReader& section, ShmLowLevelConfig& shm) {
+  section.flag("enabled", shm.enabled);
+  section.text("name_prefix", shm.name_prefix);
+  const std::string prefix_problem = shm_name_prefix_problem(shm.name_prefix);
+  if (!prefix_problem.empty()) section.fail("shm.name_prefix", prefix_problem);
+  std::string group;
+  section.text("group", group);
+  if (!group.empty()) {
+    shm.group_id = find_group_id(group);
+    if (!shm.group_id) section.fail("shm.group", "is not a group of this system: '" + group + "'");
+  }
+  std::string mode;
+  section.text("mode", mode);
+  if (mode.empty()) return;
+  const std::optional<unsigned> parsed = parse_shm_mode(mode);
+  if (!parsed) {
+    section.fail(
+        "shm.mode",
+        "must be octal permission bits (0600 .. 0777, with owner read and write, e.g. 0660), got '" + mode + "'");
+  }
+  shm.mode = *parsed;
+}
+
+void read_motor_sdk(const SectionReader& section, const fs::path& base_dir, MotorSdkConfig& motor_sdk) {
+  section.flag("enabled", motor_sdk.enabled);
+  const auto read_url = [&section](const std::string& key, std::string& url) {
+    section.text(key, url);
+    if (url.find("://") == std::string::npos) {
+      section.fail("motor_sdk." + key,
+                   "must be an LCM url such as " + lcm_url(kLcmMotorSdkPort, 255) + ", got '" + url + "'");
+    }
+  };
+  read_url("control_url", motor_sdk.control_url);
+  read_url("estimator_url", motor_sdk.estimator_url);
+  std::string file;
+  section.text("user_parameter_file", file);
+  if (file.empty()) return;
+  const fs::path file_path(file);
+  motor_sdk.user_parameter_file =
+      (file_path.is_absolute() ? file_path : base_dir / file_path).lexically_normal().string();
+  try {
+    motor_sdk.parameters.position_mutation_limit =
+        load_motor_sdk_user_parameters(motor_sdk.user_parameter_file).position_mutation_limit;
+  } catch (const UserParameterError& e) {
+    section.fail("motor_sdk.user_parameter_file", std::string("cannot be used: ") + e.what());
+  }
+}
+
+void read_highlevel(const SectionReader& section, HighLevelLcmConfig& highlevel) {
+  section.flag("enabled", highlevel.enabled);
+  const auto read_url = [&section](const std::string& key, std::string& url) {
+    section.text(key, url);
+    if (const std::string problem = lcm_url_problem(url); !problem.empty()) {
+      section.fail("highlevel." + key, problem + ", got '" + url + "'");
+    }
+  };
+  read_url("command_url", highlevel.command_url);
+  read_url("response_url", highlevel.response_url);
+  read_url("odometry_url", highlevel.odometry_url);
+  section.number("response_keepalive_s", highlevel.response_keepalive_s, 0.0, 0.19);
+}
+
+}  // namespace
+
+McConfig default_config() {
+  McConfig config;
+  config.robot.model_path = find_default_model();
+  config.motions.folder = find_default_motions();
+  return config;
+}
+
+McConfig load_config(const std::string& path) {
+  if (fs::is_directory(path)) throw ConfigError("config " + path + ": is a folder; give the YAML file in it");
+  if (!fs::is_regular_file(path)) throw ConfigError("config file not found: " + path);
+  YAML::Node root;
+  try {
+    root = YAML::LoadFile(path);
+  } catch (const YAML::Exception& e) {
+    throw ConfigError("config " + path + ": not valid YAML: " + e.what());
+  }
+  McConfig config = default_config();
+  if (root.IsNull()) return config;
+  const SectionReader top(root, path, "<top>",
+                          {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk", "highlevel", "aliengo",
+                           "motions", "sim_truth", "sim_command"});
+  const fs::path base_dir = fs::absolute(path).parent_path();
+
+  if (root["mc"]) {
+    std::string startup = "stand";
+    std::string stand = "mpc";
+    const SectionReader mc(root["mc"], path, "mc", {"startup", "locomotion_stand"});
+    mc.text("startup", startup, {"stand", "off", "damper"});
+    mc.text("locomotion_stand", stand, {"mpc", "qp"});
+    config.startup = startup == "off" ? Startup::Off : startup == "damper" ? Startup::Damper : Startup::Stand;
+    config.locomotion_stand = stand == "qp" ? LocomotionStand::Qp : LocomotionStand::Mpc;
+  }
+  if (root["robot"]) {
+    read_robot(SectionReader(root["robot"], path, "robot",
+                             {"model", "initial_pose", "initial_height_m", "sensor_noise", "seed"}),
+               base_dir, config.robot);
+  }
+  if (root["loop"]) {
+    SectionReader(root["loop"], path, "loop", {"period_s"}).number("period_s", config.loop_period_s, 0.001, 0.01);
+  }
+  if (root["stand_up"]) {
+    const SectionReader s(root["stand_up"], path, "stand_up", {"fold_duration_s", "rise_duration_s", "kp", "kd"});
+    s.number("fold_duration_s", config.stand_up.fold_duration_s, 0.0, 10.0);
+    s.number("rise_duration_s", config.stand_up.rise_duration_s, 0.1, 10.0);
+    s.number("kp", config.stand_up.kp, 0.0, 200.0);
+    s.number("kd", config.stand_up.kd, 0.0, 10.0);
+  }
+  if (root["safety"]) {
+    const SectionReader s(
+        root["safety"], path, "safety",
+        {"kp_max", "kd_max", "tau_ff_max_nm", "qd_des_max_rad_s", "joint_limit_margin_rad", "damping_kd"});
+    s.number("kp_max", config.safety.command.kp_max, 0.0, robot::kCommandKpMax);
+    s.number("kd_max", config.safety.command.kd_max, 0.0, robot::kCommandKdMax);
+    s.number("tau_ff_max_nm", config.safety.command.tau_ff_max_nm, 0.0, robot::kTorqueMaxNm);
+    s.number("qd_des_max_rad_s", config.safety.command.qd_des_max_rad_s, 0.0, 30.0);
+    s.number("joint_limit_margin_rad", config.safety.command.joint_limit_margin_rad, 0.0, 0.3);
+    s.number("damping_kd", config.safety.damping_kd, 0.0, 10.0);
+  }
+  if (root["shm"]) {
+    read_shm(SectionReader(root["shm"], path, "shm", {"enabled", "name_prefix", "mode", "group"}), config.shm);
+  }
+  if (root["motor_sdk"]) {
+    read_motor_sdk(SectionReader(root["motor_sdk"], path, "motor_sdk",
+                                 {"enabled", "control_url", "estimator_url", "user_parameter_file"}),
+                   base_dir, config.motor_sdk);
+  }
+  if (root["highlevel"]) {
+    read_highlevel(SectionReader(root["highlevel"], path, "highlevel",
+                                 {"enabled", "command_url", "response_url", "odometry_url", "response_keepalive_s"}),
+                   config.highlevel);
+  }
+  if (root["motions"]) {
+    read_motions(SectionReader(root["motions"], path, "motions", {"folder", "user_folder"}), base_dir, config.motions);
+  }
+  if (root["aliengo"]) {
+    const SectionReader s(root["aliengo"], path, "aliengo",
+                          {"enabled", "bind_address", "port", "silence_stand_s", "stand_hold_s", "lie_down_s"});
+    s.flag("enabled", config.aliengo.enabled);
+    s.text("bind_address", config.aliengo.bind_address);
+    double port = config.aliengo.port;
+    s.number("port", port, 0, 65535);
+    if (port != std::floor(port)) s.fail("aliengo.port", "must be a whole number in [0, 65535]");
+    config.aliengo.port = static_cast<int>(port);
+    s.number("silence_stand_s", config.aliengo.session.silence_stand_s, 0.05, 0.45);
+    s.number("stand_hold_s", config.aliengo.session.stand_hold_s, 0.5, 10.0);
+    s.number("lie_down_s", config.aliengo.session.lie_down_s, 1.5, 10.0);
+    if (config.aliengo.session.stand_hold_s <= config.aliengo.session.silence_stand_s) {
+      s.fail("aliengo.stand_hold_s", "must be longer than aliengo.silence_stand_s");
+    }
+  }
+  if (root["sim_truth"]) {
+    SectionReader(root["sim_truth"], path, "sim_truth", {"rate_hz"})
+        .number("rate_hz", config.sim_truth.rate_hz, 0.0, kSimTruthRateMaxHz);
+  }
+  if (root["sim_command"]) {
+    SectionReader(root["sim_command"], path, "sim_command", {"enabled"}).flag("enabled", config.sim_command.enabled);
+  }
+  return config;
+}
+
+}  // namespace cerebellum

@@ -1,0 +1,51 @@
+// The MC's configuration: one YAML file, every key documented in docs/configuration.md and
+// validated on load (unknown keys, wrong types and out-of-range values are errors).
+#pragma once
+
+#include <stdexcept>
+#include <string>
+
+#include "loop/config_error.hpp"
+#include "backend/mujoco_backend.hpp"
+#include "control/stand_up_controller.hpp"
+#include "io/lcm_highlevel/lcm_highlevel_config.hpp"
+#include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
+#include "io/lcm_sim_control/sim_control_config.hpp"
+#include "io/lcm_sim_truth/sim_truth_config.hpp"
+#include "io/shm_lowlevel/shm_lowlevel_config.hpp"
+#include "io/udp_aliengo/udp_aliengo_config.hpp"
+#include "modes/locomotion_stand.hpp"
+#include "motions/motion_folder.hpp"
+#include "safety/command_guard.hpp"
+
+namespace cerebellum {
+
+// what the MC does by itself after start
+enum class Startup {
+  Stand,   // stand up and hold (the default demo)
+  Off,     // motors passive; low-level clients may take over
+  Damper,  // joint damping (PureDamper); low-level clients may take over
+};
+
+struct McConfig {
+  Startup startup = Startup::Stand;
+  LocomotionStand locomotion_stand = LocomotionStand::Mpc;
+  MujocoBackendConfig robot;
+  double loop_period_s = 0.002;
+  StandUpConfig stand_up = default_stand_up_config();
+  GuardLimits safety;
+  ShmLowLevelConfig shm;
+  MotorSdkConfig motor_sdk;
+  HighLevelLcmConfig highlevel;
+  AlienGoUdpConfig aliengo;
+  MotionFolders motions;         // mode 62's motion files
+  SimTruthConfig sim_truth;      // simulation only
+  SimControlConfig sim_command;  // simulation only
+};
+
+// defaults, with the model found next to the build or install tree
+McConfig default_config();
+// defaults overridden by the file's keys; relative paths are taken relative to the file
+McConfig load_config(const std::string& path);
+
+}  // namespace cerebellum
