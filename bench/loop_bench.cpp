@@ -3,9 +3,14 @@
 // (bench/run.sh does): robot seconds per wall second is reported as "rtf".
 #include <benchmark/benchmark.h>
 
+#include <algorithm>
+#include <chrono>
 #include <string>
+#include <vector>
 
 #include "loop/control_loop.hpp"
+#include "loop/lockstep_client.hpp"
+#include "loop/simulated_robot.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "control/stand_up_controller.hpp"
 #include "estimation/kinematic_estimator.hpp"
@@ -44,6 +49,32 @@ void BM_PhysicsStep(benchmark::State& bench) {
   for (auto _ : bench) backend.advance(0.001);
 }
 BENCHMARK(BM_PhysicsStep)->Unit(benchmark::kMicrosecond);
+
+// the tick's wall time while the whole MC walks (gait 3 at 1 m/s, the MPC solving on its worker):
+// the loop hands the MPC its input at one tick and takes the solution at a later one, waiting
+// there if the solve is late (docs/architecture.md: that wait keeps lockstep runs deterministic).
+// p50, p99 and the longest tick of 5 s of robot time, the robot's own stand-up before it not counted
+void BM_WalkingTickWallTime(benchmark::State& bench) {
+  for (auto _ : bench) {
+    Mc mc = make_simulated_mc(default_config());
+    LockstepClient client(mc);
+    client.run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
+    std::vector<double> tick_us;
+    tick_us.reserve(2600);
+    using Clock = std::chrono::steady_clock;
+    Clock::time_point before = Clock::now();
+    client.run(high_level_command(ModeId::Locomotion, 3, 1.0), 5.0, [&](const CycleRecord&) {
+      const Clock::time_point now = Clock::now();
+      tick_us.push_back(std::chrono::duration<double, std::micro>(now - before).count());
+      before = now;
+    });
+    std::sort(tick_us.begin(), tick_us.end());
+    bench.counters["p50_us"] = tick_us[tick_us.size() / 2];
+    bench.counters["p99_us"] = tick_us[tick_us.size() * 99 / 100];
+    bench.counters["max_us"] = tick_us.back();
+  }
+}
+BENCHMARK(BM_WalkingTickWallTime)->Iterations(1)->Unit(benchmark::kMillisecond);
 
 }  // namespace
 

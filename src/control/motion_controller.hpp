@@ -13,7 +13,8 @@ namespace cerebellum {
 class MotionController {
  public:
   virtual ~MotionController() = default;
-  // called every tick, in the loop thread; must not block, allocate or print
+  // called every tick, in the loop thread; must not allocate or print, and must not wait for
+  // anything but the MPC solve it posted at an earlier tick (MpcWorker: docs/architecture.md)
   virtual void compute(const RobotState& state, JointCommand& command) = 0;
   // called every tick before compute(), also while the state is not valid (compute() is not then):
   // the health protection of this tick, which the guard enforces on the command whatever it is

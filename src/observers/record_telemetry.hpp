@@ -1,8 +1,8 @@
 // `cerebellum sim --telemetry FILE.csv`: one CSV row per 1/rate of robot time. The loop thread
-// only copies a row into a ring; a writer thread formats and writes it. Columns: time, MC status,
-// the estimator's velocity / height / attitude, simulator truth of the same (columns named
-// truth_*: tools only, never the controller's input), joint torques and temperatures.
-// The MC's commanded velocity is not exposed by HighLevelMachine, so it is not logged.
+// only copies a row into a ring; a writer thread formats and writes it. Columns: time, MC status
+// and the commanded velocity (the cycle record's high-level report), the estimator's velocity /
+// height / attitude, simulator truth of the same (columns named truth_*: tools only, never the
+// controller's input), joint torques and temperatures.
 #pragma once
 
 #include <array>

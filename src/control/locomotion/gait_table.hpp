@@ -25,7 +25,11 @@ struct GaitCycle {
   int stance_segments;  // every leg's stance length
 };
 
-// the swing height when a command gives none (a step height below 1 cm)
+// the gait table's default swing height, for those that give none: a walking-controller target
+// that sets none (before the first command, the uploaded gait's closing stand) and clients that
+// send a gait's default (the in-process lockstep client, loop/lockstep_client.hpp). It is no
+// fallback for a commanded step height: mode 11 clamps that to kStepHeightRange
+// (modes/command_ranges.hpp, 0.005..0.06 m), so 0 walks at the 5 mm floor
 inline constexpr double kDefaultStepHeightM = 0.06;
 
 // gait ids other code names: the stand that pulls the body back over its feet after a push (also

@@ -9,9 +9,9 @@
 namespace cerebellum {
 
 inline constexpr const char* kLcmGroup = "239.255.76.67";
-// motor_ctrl, spi_data, motor_ctrl_state, global_to_robot, sim_truth, sim_command
+// motor_ctrl, spi_data, motor_ctrl_state, leg_control_data, global_to_robot, sim_truth, sim_command
 inline constexpr int kLcmMotorSdkPort = 7667;
-inline constexpr int kLcmStateEstimatorPort = 7669;  // state_estimator, leg_control_data
+inline constexpr int kLcmStateEstimatorPort = 7669;  // state_estimator
 inline constexpr int kLcmResponsePort = 7670;        // robot_control_response, motor_temperature
 inline constexpr int kLcmCommandPort = 7671;         // robot_control_cmd, user_gait_file, user_gait_result
 inline constexpr std::array<int, 4> kLcmPorts{kLcmMotorSdkPort, kLcmStateEstimatorPort, kLcmResponsePort,
