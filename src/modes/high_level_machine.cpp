@@ -59,14 +59,16 @@ bool HighLevelMachine::allows_low_level_latch() const {
 void HighLevelMachine::on_handover() { handed_over_ = true; }
 
 void HighLevelMachine::refuse(const HighLevelCommand& command, const char* reason, const char* holder,
-                              SwitchStatus status) {
+                              SwitchStatus status, std::optional<HighLevelSource> source) {
   banned_ = true;
   refused_status_ = status;
   counters_.banned_transitions.fetch_add(1, std::memory_order_relaxed);
   const int from_mode = handed_over_          ? static_cast<int>(ModeId::LowLevelMotor)
                         : current_ != nullptr ? static_cast<int>(current_->id())
                                               : -1;
-  refusals_.try_push({command.mode, command.gait_id, from_mode, reason, holder});
+  // the queue holds the commands of the client holding the robot
+  const HighLevelSource of = source.value_or(lease_.holder().value_or(HighLevelSource::CyberDog2Lcm));
+  refusals(of).try_push({command.mode, command.gait_id, from_mode, reason, holder});
 }
 
 bool HighLevelMachine::holds_lease(const TimedCommand& input) {
@@ -85,7 +87,7 @@ bool HighLevelMachine::holds_lease(const TimedCommand& input) {
   // one note per new command of the refused client (heartbeats and streams repeat it)
   if (refused_life_count_[source] != input.command.life_count) {
     refused_life_count_[source] = input.command.life_count;
-    refusals_.try_push(
+    refusals(input.source).try_push(
         {input.command.mode, input.command.gait_id, current_ != nullptr ? static_cast<int>(current_->id()) : -1,
          input.source == HighLevelSource::CyberDog2Lcm ? "another high-level client holds the robot"
                                                        : "another high-level client holds the robot (HighCmd)",
@@ -109,7 +111,7 @@ bool HighLevelMachine::take_input(const TimedCommand& input) {
     case CommandQueue::Receipt::QueueFull: counters_.queue_full.fetch_add(1, std::memory_order_relaxed); break;
     case CommandQueue::Receipt::Dropped:
       counters_.motions_dropped.fetch_add(1, std::memory_order_relaxed);
-      refusals_.try_push({input.command.mode, input.command.gait_id, static_cast<int>(ModeId::Motion),
+      refusals(input.source).try_push({input.command.mode, input.command.gait_id, static_cast<int>(ModeId::Motion),
                           "a motion is running: mode-62 commands are dropped until it ends", nullptr});
       break;
     case CommandQueue::Receipt::Heartbeat:
@@ -123,7 +125,8 @@ void HighLevelMachine::observe_while_held(const RobotState& state, const char* h
   // refresh the client's life_count memory
   take_commands(state, [&](const TimedCommand& input) {
     if (!take_input(input)) return;
-    refuse(input.command, "a low-level client holds the robot until restart", holder);
+    refuse(input.command, "a low-level client holds the robot until restart", holder, SwitchStatus::BanTransition,
+           input.source);
     queue_.clear();
   });
   applied_generation_ = queue_.generation();

@@ -83,16 +83,20 @@ class HighLevelMachine final : public OwnBehaviour {
   // the client holding the robot (loop thread); none before the first command and after the
   // holder has been silent past the heartbeat timeout
   std::optional<HighLevelSource> holder() const { return lease_.holder(); }
-  // refusals not yet taken by a logger (loop thread pushes, one consumer thread pops)
-  SpscRing<RefusalNote, 16>& refusals() { return refusals_; }
+  // refusals of one client's commands not yet taken by its interface's logger (the loop thread
+  // pushes, one consumer thread per client pops)
+  SpscRing<RefusalNote, 16>& refusals(HighLevelSource source = HighLevelSource::CyberDog2Lcm) {
+    return refusals_[static_cast<std::size_t>(source)];
+  }
 
  private:
   Mode* mode_for(int mode) const;
   // false when the command was refused
   bool apply(const RobotState& state, const HighLevelCommand& command);
   void switch_to(Mode& mode, const RobotState& state, const HighLevelCommand& command);
+  // a refusal of a command of the client holding the robot (the queue's), or of `source`'s
   void refuse(const HighLevelCommand& command, const char* reason, const char* holder = nullptr,
-              SwitchStatus status = SwitchStatus::BanTransition);
+              SwitchStatus status = SwitchStatus::BanTransition, std::optional<HighLevelSource> source = std::nullopt);
   // one tick of client input into the queue, counted; false when it holds no new command
   bool take_input(const TimedCommand& input);
   // the lease: true when the input's client holds the robot or may take it over now
@@ -132,7 +136,7 @@ class HighLevelMachine final : public OwnBehaviour {
   bool orientation_error_ = false;    // latched until a recovery stand starts
   int foot_position_error_ = 0;       // footpos_error bits, latched likewise
   HealthVerdict health_;              // the health protection of this tick
-  SpscRing<RefusalNote, 16> refusals_;
+  std::array<SpscRing<RefusalNote, 16>, kHighLevelSourceCount> refusals_;
   std::array<int, kHighLevelSourceCount> refused_life_count_{-1, -1};  // the last one noted per source
 };
 

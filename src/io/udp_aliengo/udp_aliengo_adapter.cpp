@@ -49,7 +49,7 @@ int open_socket(const AlienGoUdpConfig& config, int& bound_port) {
 
 }  // namespace
 
-UdpAliengoAdapter::UdpAliengoAdapter(const HighLevelMachine& machine, AlienGoSource& source,
+UdpAliengoAdapter::UdpAliengoAdapter(HighLevelMachine& machine, AlienGoSource& source,
                                      const AlienGoUdpConfig& config, std::FILE* log)
     : machine_(machine),
       source_(source),
@@ -123,6 +123,15 @@ void UdpAliengoAdapter::log_refusals(double now_s) {
     char line[160];
     std::snprintf(line, sizeof line, "HighCmd mode %d refused in mode %d: %s", refusal->mode, refusal->session_mode,
                   refusal->reason);
+    refusal_log_.line(now_s, line);
+  }
+  // what the MC refused of the commands the session made (another client holds the robot, a
+  // transition the MC does not allow, a protection)
+  while (std::optional<RefusalNote> note = machine_.refusals(HighLevelSource::AlienGoUdp).try_pop()) {
+    char line[256];
+    std::snprintf(line, sizeof line, "the MC refused mode %d gait %d while in mode %d: %s%s%s%s", note->mode,
+                  note->gait_id, note->from_mode, note->reason, note->holder != nullptr ? " (" : "",
+                  note->holder != nullptr ? note->holder : "", note->holder != nullptr ? ")" : "");
     refusal_log_.line(now_s, line);
   }
 }

@@ -43,9 +43,9 @@ struct AlienGoCounters {
 class UdpAliengoAdapter final : public CycleObserver {
  public:
   // binds the socket and starts the thread; throws std::runtime_error naming the address
-  // machine: its per-client counters, for the log; source: where decoded HighCmds go
-  UdpAliengoAdapter(const HighLevelMachine& machine, AlienGoSource& source, const AlienGoUdpConfig& config,
-                    std::FILE* log);
+  // machine: its per-client counters and the refusals of this client's commands, for the log;
+  // source: where decoded HighCmds go
+  UdpAliengoAdapter(HighLevelMachine& machine, AlienGoSource& source, const AlienGoUdpConfig& config, std::FILE* log);
   ~UdpAliengoAdapter() override;
   UdpAliengoAdapter(const UdpAliengoAdapter&) = delete;
   UdpAliengoAdapter& operator=(const UdpAliengoAdapter&) = delete;
@@ -75,7 +75,7 @@ class UdpAliengoAdapter final : public CycleObserver {
   void log_refusals(double now_s);
   void log_once_per_second();
 
-  const HighLevelMachine& machine_;
+  HighLevelMachine& machine_;
   AlienGoSource& source_;
   std::FILE* log_;
   std::atomic<LinkFaults*> link_faults_{nullptr};
