@@ -1,5 +1,8 @@
 #!/usr/bin/env bash
-# Builds and runs every benchmark, each pinned to one core; results go to build/bench/results/.
+# Builds and runs every benchmark, each pinned to one core; results go to build/bench/results/:
+# Google Benchmark JSON (<name>.json) and each benchmark's printed output (<name>.txt). Then
+# bench/check_page.py compares the rows of docs/benchmarks.md that claim a verdict with them and
+# fails the run if one is contradicted.
 #   bench/run.sh [benchmark name filter]
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -8,13 +11,23 @@ root=$(cd "$(dirname "$0")/.." && pwd)
 out="$root/build/bench/results"
 mkdir -p "$out"
 filter=${1:-}
+ran=()
 for exe in "$root"/build/bench/*_bench; do
   name=$(basename "$exe")
   [[ -z "$filter" || "$name" == *"$filter"* ]] || continue
   echo "== $name"
-  taskset -c 1 "$exe" --benchmark_out="$out/$name.json" --benchmark_out_format=json || echo "== $name: some targets were missed (see its table)"
+  ran+=("$name")
+  taskset -c 1 "$exe" --benchmark_out="$out/$name.json" --benchmark_out_format=json | tee "$out/$name.txt" ||
+    echo "== $name: some targets were missed (see its table)"
 done
 # the locomotion benchmark's velocity traces as a picture
 if [[ -f "$out/locomotion_velocity.csv" ]]; then
   /usr/bin/python3 "$root/bench/plot_locomotion.py" "$out/locomotion_velocity.csv" "$root/docs/images/locomotion_velocity.png"
 fi
+# the page against what this run printed: a row its own benchmark contradicts fails the run
+if ((${#ran[@]} == 0)); then
+  echo "bench/run.sh: 0 rows checked, 0 contradicted (no benchmark matched '$filter')"
+  exit 0
+fi
+/usr/bin/python3 "$root/bench/check_page.py" --page "$root/docs/benchmarks.md" --results "$out" --bench "${ran[@]}" \
+  --label bench/run.sh

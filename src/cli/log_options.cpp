@@ -122,8 +122,7 @@ ReplayOptions parse_replay_options(const std::vector<std::string>& args) {
 std::vector<std::string> logger_command(const std::string& prefix, int port, bool force) {
   // lcm-logger flushes when an event arrives more than the interval after the last flush: with
   // 1 ms (the least it takes) the file on disk follows the traffic and can be read while recording
-  std::vector<std::string> command = {"lcm-logger", "--quiet", "--flush-interval=1",
-                                      "--lcm-url=" + lcm_url(port, 0)};
+  std::vector<std::string> command = {"lcm-logger", "--quiet", "--flush-interval=1", "--lcm-url=" + lcm_url(port, 0)};
   if (force) command.push_back("--force");
   command.push_back(log_file_path(prefix, port));
   return command;

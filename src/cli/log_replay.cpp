@@ -56,8 +56,8 @@ std::vector<PortLog> find_port_logs(const std::string& prefix, const std::vector
     const auto port = std::find_if(known.begin(), known.end(), [&](int p) { return std::to_string(p) == port_text; });
     if (port == known.end()) {
       throw std::invalid_argument("cannot tell the port of " + prefix +
-                                  ": name it <prefix>.<port>.lcmlog with a port of " +
-                                  "the interface (" + lcm_port_list() + ")");
+                                  ": name it <prefix>.<port>.lcmlog with a port of " + "the interface (" +
+                                  lcm_port_list() + ")");
     }
     if (access(prefix.c_str(), R_OK) != 0) throw std::invalid_argument("no such log file: " + prefix);
     logs.push_back({*port, prefix});

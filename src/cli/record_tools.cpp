@@ -6,7 +6,8 @@ namespace cerebellum {
 
 SimTools::SimTools(Mc& mc, const SimOptions& options) : mc_(mc), options_(options) {
   if (!options.telemetry_path.empty()) {
-    telemetry_ = std::make_unique<TelemetryRecorder>(options.telemetry_path, options.telemetry_rate_hz, mc.simulation());
+    telemetry_ =
+        std::make_unique<TelemetryRecorder>(options.telemetry_path, options.telemetry_rate_hz, mc.simulation());
     mc.loop().add_observer(*telemetry_);
   }
   if (!options.record_path.empty()) {

@@ -18,7 +18,7 @@ struct CycleRecord {
   JointCommand command;      // as written to the robot, after the guard
   ContactPlan contact_plan;  // planned by the control stage, for the estimator at the next tick
   SafetyReport safety;
-  HealthVerdict health;  // the health protection of this tick (enforced by the guard)
+  HealthVerdict health;        // the health protection of this tick (enforced by the guard)
   HighLevelReport high_level;  // the high-level state machine after this tick (status, running command)
   // the guard over the commands substep participants wrote during this tick's period (flags OR-ed;
   // zero when none did). Filled after the observers ran: they see the previous period's here

@@ -84,8 +84,8 @@ void SectionReader::path(const std::string& key, std::string& value) const {
     double number = 0.0;
     bool boolean = false;
     if (YAML::convert<double>::decode(node, number)) {
-      fail(qualified(key), "must be a file path (a string), got the number " + node.Scalar() +
-                               " (quote it if a file has that name)");
+      fail(qualified(key),
+           "must be a file path (a string), got the number " + node.Scalar() + " (quote it if a file has that name)");
     }
     if (YAML::convert<bool>::decode(node, boolean)) {
       fail(qualified(key), "must be a file path (a string), got the boolean " + node.Scalar());

@@ -87,11 +87,12 @@ bool HighLevelMachine::holds_lease(const TimedCommand& input) {
   // one note per new command of the refused client (heartbeats and streams repeat it)
   if (refused_life_count_[source] != input.command.life_count) {
     refused_life_count_[source] = input.command.life_count;
-    refusals(input.source).try_push(
-        {input.command.mode, input.command.gait_id, current_ != nullptr ? static_cast<int>(current_->id()) : -1,
-         input.source == HighLevelSource::CyberDog2Lcm ? "another high-level client holds the robot"
-                                                       : "another high-level client holds the robot (HighCmd)",
-         source_name(*lease_.holder())});
+    refusals(input.source)
+        .try_push(
+            {input.command.mode, input.command.gait_id, current_ != nullptr ? static_cast<int>(current_->id()) : -1,
+             input.source == HighLevelSource::CyberDog2Lcm ? "another high-level client holds the robot"
+                                                           : "another high-level client holds the robot (HighCmd)",
+             source_name(*lease_.holder())});
   }
   // the LCM client sees its refusal in robot_control_response
   if (input.source == HighLevelSource::CyberDog2Lcm) {
@@ -111,8 +112,9 @@ bool HighLevelMachine::take_input(const TimedCommand& input) {
     case CommandQueue::Receipt::QueueFull: counters_.queue_full.fetch_add(1, std::memory_order_relaxed); break;
     case CommandQueue::Receipt::Dropped:
       counters_.motions_dropped.fetch_add(1, std::memory_order_relaxed);
-      refusals(input.source).try_push({input.command.mode, input.command.gait_id, static_cast<int>(ModeId::Motion),
-                          "a motion is running: mode-62 commands are dropped until it ends", nullptr});
+      refusals(input.source)
+          .try_push({input.command.mode, input.command.gait_id, static_cast<int>(ModeId::Motion),
+                     "a motion is running: mode-62 commands are dropped until it ends", nullptr});
       break;
     case CommandQueue::Receipt::Heartbeat:
     case CommandQueue::Receipt::Ignored: break;

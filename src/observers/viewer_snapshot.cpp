@@ -8,8 +8,7 @@
 namespace cerebellum {
 
 SnapshotCapture::SnapshotCapture(const Simulation& simulation)
-    : simulation_(simulation),
-      trunk_body_(std::max(0, mj_name2id(simulation.model(), mjOBJ_BODY, "trunk"))) {}
+    : simulation_(simulation), trunk_body_(std::max(0, mj_name2id(simulation.model(), mjOBJ_BODY, "trunk"))) {}
 
 SimSnapshot SnapshotCapture::sized_snapshot() const {
   SimSnapshot snapshot;

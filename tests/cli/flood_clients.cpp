@@ -53,8 +53,7 @@ std::uint64_t flood_aliengo(int port, Clock::time_point end) {
   std::uint64_t sent = 0;
   while (Clock::now() < end) {
     for (int i = 0; i < 256; ++i) {
-      const ssize_t n =
-          ::sendto(fd, frame, sizeof frame, 0, reinterpret_cast<const sockaddr*>(&target), sizeof target);
+      const ssize_t n = ::sendto(fd, frame, sizeof frame, 0, reinterpret_cast<const sockaddr*>(&target), sizeof target);
       sent += n == static_cast<ssize_t>(sizeof frame) ? 1 : 0;
     }
   }
@@ -83,7 +82,6 @@ int main(int argc, char** argv) {
   const std::uint64_t aliengo_sent = flood_aliengo(port, end);
   lcm_thread.join();
   std::printf("flood_clients: %llu robot_control_cmd and %llu HighCmd sent in %.1f s\n",
-              static_cast<unsigned long long>(lcm_sent.load()), static_cast<unsigned long long>(aliengo_sent),
-              seconds);
+              static_cast<unsigned long long>(lcm_sent.load()), static_cast<unsigned long long>(aliengo_sent), seconds);
   return lcm_sent.load() > 0 && aliengo_sent > 0 ? 0 : 1;
 }

@@ -27,8 +27,7 @@ std::uint64_t taken_in_total(const HighLevelMachine& machine) {
 
 // a client thread: hands over `count` commands stamped time_s, each one again until it is taken
 // (a full ring refuses it)
-std::thread client(HighLevelMachine& machine, HighLevelSource source, ModeId mode, std::uint64_t count,
-                   double time_s) {
+std::thread client(HighLevelMachine& machine, HighLevelSource source, ModeId mode, std::uint64_t count, double time_s) {
   return std::thread([&machine, source, mode, count, time_s] {
     for (std::uint64_t i = 0; i < count; ++i) {
       // a new life_count every 16 commands: new commands and heartbeats mixed, as clients send

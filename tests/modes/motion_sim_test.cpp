@@ -72,8 +72,8 @@ MotionRun run_motion(ModeSim& sim, int id, double max_s) {
 
 struct MotionCase {
   int id;
-  double minimum_s;  // the reference's minimum duration
-  double foot_rise_m;     // at least one foot rises this high above its stand height (0: none needs to)
+  double minimum_s;      // the reference's minimum duration
+  double foot_rise_m;    // at least one foot rises this high above its stand height (0: none needs to)
   bool travels = false;  // walks away from where it started (the moonwalk)
 };
 
@@ -118,9 +118,8 @@ TEST_P(EveryMotion, RunsToItsEndWithoutAFallAndLeavesTheRobotInItsStandPose) {
 }
 
 INSTANTIATE_TEST_SUITE_P(ShippedMotions, EveryMotion,
-                         ::testing::Values(MotionCase{1, 8.6, 0.08}, MotionCase{2, 8.6, 0.08},
-                                           MotionCase{3, 1.3, 0.0}, MotionCase{4, 3.9, 0.0},
-                                           MotionCase{5, 3.9, 0.0}, MotionCase{6, 3.3, 0.0},
+                         ::testing::Values(MotionCase{1, 8.6, 0.08}, MotionCase{2, 8.6, 0.08}, MotionCase{3, 1.3, 0.0},
+                                           MotionCase{4, 3.9, 0.0}, MotionCase{5, 3.9, 0.0}, MotionCase{6, 3.3, 0.0},
                                            MotionCase{11, 27.0, 0.08}, MotionCase{12, 9.0, 0.04, true},
                                            MotionCase{34, 14.0, 0.0}),
                          [](const ::testing::TestParamInfo<MotionCase>& info) {

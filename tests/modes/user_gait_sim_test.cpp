@@ -199,8 +199,8 @@ struct Moonwalk {
 };
 
 Gait moonwalk(const Moonwalk& m) {
-  const std::array<std::array<int, 4>, 8> contacts{{{1, 1, 1, 1}, {0, 0, 0, 0}, {0, 1, 1, 0}, {0, 0, 0, 0},
-                                                    {1, 1, 1, 1}, {0, 0, 0, 0}, {1, 0, 0, 1}, {0, 0, 0, 0}}};
+  const std::array<std::array<int, 4>, 8> contacts{
+      {{1, 1, 1, 1}, {0, 0, 0, 0}, {0, 1, 1, 0}, {0, 0, 0, 0}, {1, 1, 1, 1}, {0, 0, 0, 0}, {1, 0, 0, 1}, {0, 0, 0, 0}}};
   std::string definition = "# Gait Def\n";
   auto section = [&](const std::array<int, 4>& c, int n) {
     definition += "[[section]]\ncontact = [" + std::to_string(c[0]) + ", " + std::to_string(c[1]) + ", " +
@@ -247,12 +247,11 @@ TEST_P(MoonwalkVariant, RunsOnItsContactPatternStaysUpAndEndsStanding) {
 
 // quicker and shorter; slower with longer strides and higher steps; feet landing 3 cm outwards;
 // standing still (vx 0)
-INSTANTIATE_TEST_SUITE_P(
-    OtherNumbers, MoonwalkVariant,
-    ::testing::Values(Moonwalk{{3, 1, 4, 1, 3, 1, 4, 1}, 10, -0.08, 0.03, 0.0, 0.04, 0.005},
-                      Moonwalk{{6, 1, 8, 1, 6, 1, 8, 1}, 5, -0.04, 0.07, 0.0, 0.06, 0.015},
-                      Moonwalk{{4, 1, 6, 1, 4, 1, 6, 1}, 6, -0.06, 0.05, 0.03, 0.05, 0.01},
-                      Moonwalk{{4, 2, 5, 2, 4, 2, 5, 2}, 6, 0.0, 0.04, 0.0, 0.05, 0.01}));
+INSTANTIATE_TEST_SUITE_P(OtherNumbers, MoonwalkVariant,
+                         ::testing::Values(Moonwalk{{3, 1, 4, 1, 3, 1, 4, 1}, 10, -0.08, 0.03, 0.0, 0.04, 0.005},
+                                           Moonwalk{{6, 1, 8, 1, 6, 1, 8, 1}, 5, -0.04, 0.07, 0.0, 0.06, 0.015},
+                                           Moonwalk{{4, 1, 6, 1, 4, 1, 6, 1}, 6, -0.06, 0.05, 0.03, 0.05, 0.01},
+                                           Moonwalk{{4, 2, 5, 2, 4, 2, 5, 2}, 6, 0.0, 0.04, 0.0, 0.05, 0.01}));
 
 TEST(UserGaitSim, WithoutAnUploadedGaitGait110IsRefused) {
   ModeSim sim;

@@ -67,23 +67,12 @@ void LcmHighLevelAdapter::on_cycle(const CycleRecord& record) {
   const HighLevelStatus& status = record.high_level.status;
   const PublishDue due = schedule_.on_tick(record.tick, status);
   if (due.any() && telemetry_.try_push(Telemetry{due, record.tick, status, record.state})) {
-    feedback_queued_.fetch_add(1, std::memory_order_release);
+    counts_.feedback_queued.add();
   }
 }
 
 HighLevelInterfaceCounters LcmHighLevelAdapter::counters() const {
-  HighLevelInterfaceCounters c;
-  c.commands_submitted = commands_submitted_.load();
-  c.wrong_fingerprint = wrong_fingerprint_.load();
-  c.truncated = truncated_.load();
-  c.oversized = oversized_.load();
-  c.responses_published = responses_published_.load();
-  c.odometry_published = odometry_published_.load();
-  c.temperatures_published = temperatures_published_.load();
-  c.gait_files_accepted = gait_files_accepted_.load();
-  c.gait_files_refused = gait_files_refused_.load();
-  c.feedback_queued = feedback_queued_.load(std::memory_order_acquire);
-  c.feedback_sent = feedback_sent_.load(std::memory_order_acquire);
+  HighLevelInterfaceCounters c = counts_;
   c.telemetry_dropped = telemetry_.dropped();
   return c;
 }
@@ -113,11 +102,11 @@ void LcmHighLevelAdapter::handle_command(const std::uint8_t* data, std::size_t s
   switch (decode_robot_control_cmd(data, size, command)) {
     case WireDecode::Ok:
       machine_.submit(command, robot_time_s_.load(std::memory_order_relaxed));
-      commands_submitted_.fetch_add(1);
+      counts_.commands_submitted.add();
       return;
-    case WireDecode::WrongFingerprint: wrong_fingerprint_.fetch_add(1, std::memory_order_relaxed); return;
-    case WireDecode::Truncated: truncated_.fetch_add(1, std::memory_order_relaxed); return;
-    case WireDecode::Oversized: oversized_.fetch_add(1, std::memory_order_relaxed); return;
+    case WireDecode::WrongFingerprint: counts_.wrong_fingerprint.add(); return;
+    case WireDecode::Truncated: counts_.truncated.add(); return;
+    case WireDecode::Oversized: counts_.oversized.add(); return;
   }
 }
 
@@ -151,7 +140,7 @@ void LcmHighLevelAdapter::on_gait_file(const lcm::ReceiveBuffer* buffer, const s
     }
   }
   gait_file_log_.line(wall_seconds(), line);
-  (accepted ? gait_files_accepted_ : gait_files_refused_).fetch_add(1);
+  (accepted ? counts_.gait_files_accepted : counts_.gait_files_refused).add();
   const file_recv_lcmt reply = make_file_result(accepted);
   command_lcm_->publish(kUserGaitResultChannel, &reply);
 }
@@ -161,20 +150,20 @@ void LcmHighLevelAdapter::publish(const Telemetry& telemetry) {
   if (telemetry.due.odometry) {
     const localization_lcmt odometry = make_localization(telemetry.state);
     odometry_lcm_->publish(kOdometryChannel, &odometry);
-    odometry_published_.fetch_add(1);
+    counts_.odometry_published.add();
   }
   if (telemetry.due.temperature) {
     const danger_states_lcmt temperature = make_danger_states(telemetry.state);
     response_lcm_->publish(kTemperatureChannel, &temperature);
-    temperatures_published_.fetch_add(1);
+    counts_.temperatures_published.add();
   }
-  feedback_sent_.fetch_add(1, std::memory_order_release);
+  counts_.feedback_sent.add();
 }
 
 void LcmHighLevelAdapter::publish_response(const HighLevelStatus& status, std::uint64_t tick) {
   const robot_control_response_lcmt response = make_response(status);
   response_lcm_->publish(kResponseChannel, &response);
-  responses_published_.fetch_add(1);
+  counts_.responses_published.add();
   last_status_ = status;
   has_status_ = true;
   last_response_tick_ = tick;
@@ -209,9 +198,9 @@ void LcmHighLevelAdapter::log_refusals() {
 LcmHighLevelAdapter::LoggedCounts LcmHighLevelAdapter::current_counts() const {
   const CommandCounters& machine = machine_.counters();
   LoggedCounts c;
-  c.wrong_fingerprint = wrong_fingerprint_.load();
-  c.truncated = truncated_.load();
-  c.oversized = oversized_.load();
+  c.wrong_fingerprint = counts_.wrong_fingerprint.load();
+  c.truncated = counts_.truncated.load();
+  c.oversized = counts_.oversized.load();
   c.non_finite = machine.rejected_non_finite.load();
   c.queue_full = machine.queue_full.load();
   const SourceInputCounters& input = machine_.input_counters(HighLevelSource::CyberDog2Lcm);
@@ -233,7 +222,8 @@ void LcmHighLevelAdapter::log_counts_once_per_second() {
   append_count(text, now.non_finite - before.non_finite, "with NaN/Inf");
   append_count(text, now.queue_full - before.queue_full, "timed commands beyond the 64-entry queue");
   append_count(text, now.ring_overflow - before.ring_overflow, "arriving faster than the loop takes them");
-  append_count(text, now.wrong_thread - before.wrong_thread, "handed over by a second thread (a defect: one thread per client)");
+  append_count(text, now.wrong_thread - before.wrong_thread,
+               "handed over by a second thread (a defect: one thread per client)");
   if (!text.empty()) {
     std::fprintf(log_, "highlevel: robot_control_cmd packets rejected in the last second: %s\n", text.c_str());
   }
@@ -264,9 +254,9 @@ void LcmHighLevelAdapter::finish(std::FILE* out) {
                "%llu stored, %llu refused; %llu feedback cycles dropped\n",
                ull(c.commands_submitted), ull(m.new_commands.load()), ull(m.banned_transitions.load()),
                ull(m.rejected_non_finite.load()), ull(m.queue_full.load()), ull(c.wrong_fingerprint), ull(c.truncated),
-               ull(c.oversized), ull(m.timeouts[static_cast<std::size_t>(HighLevelSource::CyberDog2Lcm)].load()), ull(c.responses_published), ull(c.odometry_published),
-               ull(c.temperatures_published), ull(c.gait_files_accepted), ull(c.gait_files_refused),
-               ull(c.telemetry_dropped));
+               ull(c.oversized), ull(m.timeouts[static_cast<std::size_t>(HighLevelSource::CyberDog2Lcm)].load()),
+               ull(c.responses_published), ull(c.odometry_published), ull(c.temperatures_published),
+               ull(c.gait_files_accepted), ull(c.gait_files_refused), ull(c.telemetry_dropped));
   std::fflush(out);
 }
 

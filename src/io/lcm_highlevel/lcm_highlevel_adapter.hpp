@@ -16,6 +16,7 @@
 #include "core/spsc_ring.hpp"
 #include "cycle/cycle_observer.hpp"
 #include "io/common/adapter_thread.hpp"
+#include "io/common/count.hpp"
 #include "io/common/count_report.hpp"
 #include "io/common/link_faults.hpp"
 #include "io/common/rate_limited_log.hpp"
@@ -33,18 +34,19 @@ struct ReceiveBuffer;
 namespace cerebellum {
 
 struct HighLevelInterfaceCounters {
-  std::uint64_t commands_submitted = 0;  // robot_control_cmd packets handed to machine.submit
-  std::uint64_t wrong_fingerprint = 0;   // robot_control_cmd packets dropped ...
-  std::uint64_t truncated = 0;
-  std::uint64_t oversized = 0;
-  std::uint64_t responses_published = 0;
-  std::uint64_t odometry_published = 0;
-  std::uint64_t temperatures_published = 0;
-  std::uint64_t gait_files_accepted = 0;
-  std::uint64_t gait_files_refused = 0;
-  std::uint64_t feedback_queued = 0;    // cycles with something due, copied by the loop thread
-  std::uint64_t feedback_sent = 0;      // ... and published by the interface thread
-  std::uint64_t telemetry_dropped = 0;  // ... and dropped: the interface thread fell behind
+  Count commands_submitted;  // robot_control_cmd packets handed to machine.submit
+  Count wrong_fingerprint;   // robot_control_cmd packets dropped ...
+  Count truncated;
+  Count oversized;
+  Count responses_published;
+  Count odometry_published;
+  Count temperatures_published;
+  Count gait_files_accepted;
+  Count gait_files_refused;
+  Count feedback_queued;  // cycles with something due, copied by the loop thread
+  Count feedback_sent;    // ... and published by the interface thread
+  Count
+      telemetry_dropped;  // ... and dropped: the interface thread fell behind (the ring's count, filled by counters())
 };
 
 class LcmHighLevelAdapter final : public CycleObserver {
@@ -77,7 +79,8 @@ class LcmHighLevelAdapter final : public CycleObserver {
   };
   struct LoggedCounts {
     std::uint64_t wrong_fingerprint = 0, truncated = 0, oversized = 0;
-    std::uint64_t non_finite = 0, queue_full = 0, ring_overflow = 0, wrong_thread = 0, timeouts = 0, telemetry_dropped = 0;
+    std::uint64_t non_finite = 0, queue_full = 0, ring_overflow = 0, wrong_thread = 0, timeouts = 0,
+                  telemetry_dropped = 0;
   };
 
   void step();
@@ -107,18 +110,8 @@ class LcmHighLevelAdapter final : public CycleObserver {
   SpscRing<Telemetry, 128> telemetry_;
   std::atomic<double> robot_time_s_{0.0};  // of the newest cycle: stamps received commands
   std::atomic<std::uint64_t> latest_tick_{0};
-  std::atomic<std::uint64_t> feedback_queued_{0};
-  // interface thread -> anyone
-  std::atomic<std::uint64_t> commands_submitted_{0};
-  std::atomic<std::uint64_t> wrong_fingerprint_{0};
-  std::atomic<std::uint64_t> truncated_{0};
-  std::atomic<std::uint64_t> oversized_{0};
-  std::atomic<std::uint64_t> responses_published_{0};
-  std::atomic<std::uint64_t> odometry_published_{0};
-  std::atomic<std::uint64_t> temperatures_published_{0};
-  std::atomic<std::uint64_t> gait_files_accepted_{0};
-  std::atomic<std::uint64_t> gait_files_refused_{0};
-  std::atomic<std::uint64_t> feedback_sent_{0};
+  // the interface thread counts (the loop thread: feedback_queued); anyone reads
+  HighLevelInterfaceCounters counts_;
   // interface thread only
   HighLevelStatus last_status_;
   bool has_status_ = false;

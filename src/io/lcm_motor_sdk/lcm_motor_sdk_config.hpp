@@ -14,7 +14,7 @@ struct MotorSdkConfig {
   bool enabled = true;
   std::string control_url = lcm_url(kLcmMotorSdkPort, 0);          // motor_ctrl, spi_data, ...
   std::string estimator_url = lcm_url(kLcmStateEstimatorPort, 0);  // state_estimator
-  std::string user_parameter_file;                                  // empty: the rules' defaults
+  std::string user_parameter_file;                                 // empty: the rules' defaults
   MotorSdkParameters parameters;  // position_mutation_limit comes from the user parameter file
 };
 

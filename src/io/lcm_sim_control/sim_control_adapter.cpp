@@ -33,9 +33,7 @@ SimControlAdapter::SimControlAdapter(Simulation& simulation, FaultInjectingBacke
 
 SimControlAdapter::~SimControlAdapter() { thread_.stop(); }
 
-SimControlCounters SimControlAdapter::counters() const {
-  return SimControlCounters{taken_.load(), refused_.load(), malformed_.load()};
-}
+SimControlCounters SimControlAdapter::counters() const { return counts_; }
 
 void SimControlAdapter::step() {
   handle_pending(*lcm_, 5);
@@ -44,7 +42,7 @@ void SimControlAdapter::step() {
 
 void SimControlAdapter::on_command(const lcm::ReceiveBuffer* buffer, const std::string&) {
   const auto refuse_malformed = [&](const std::string& why) {
-    malformed_.fetch_add(1);
+    counts_.malformed.add();
     log_lines_.line(wall_seconds(), "refused a " + std::to_string(buffer->data_size) + "-byte packet: " + why);
   };
   if (!has_fingerprint(buffer->data, buffer->data_size, sim_command_lcmt::getHash())) {
@@ -64,14 +62,14 @@ void SimControlAdapter::on_command(const lcm::ReceiveBuffer* buffer, const std::
   }
   const SimCommand command = parse_sim_command(message.command);
   const auto refuse = [&](const std::string& why) {
-    refused_.fetch_add(1);
+    counts_.refused.add();
     log_lines_.line(wall_seconds(), "refused: " + why);
     answer(message.request_id, false, why);
   };
   if (command.link) {
     if (links_ == nullptr) return refuse("this simulation has no client link faults");
     links_->of(command.link->link).apply(*command.link);
-    taken_.fetch_add(1);
+    counts_.taken.add();
     const std::string done = "taken: " + fault_command_text(*command.link);
     log_lines_.line(wall_seconds(), done);
     answer(message.request_id, true, done);
@@ -80,7 +78,7 @@ void SimControlAdapter::on_command(const lcm::ReceiveBuffer* buffer, const std::
   if (command.fault) {
     if (faults_ == nullptr) return refuse("this robot has no fault injector");
     if (const std::string why = faults_->request(*command.fault); !why.empty()) return refuse(why);
-    taken_.fetch_add(1);
+    counts_.taken.add();
     const std::string done = "taken: " + fault_command_text(*command.fault);
     log_lines_.line(wall_seconds(), done);
     answer(message.request_id, true, done);
@@ -88,7 +86,7 @@ void SimControlAdapter::on_command(const lcm::ReceiveBuffer* buffer, const std::
   }
   if (!command.push) return refuse(command.error);
   simulation_.request_force_pulse(*command.push);
-  taken_.fetch_add(1);
+  counts_.taken.add();
   const std::string done = "taken: " + push_command_text(*command.push) + " (N, N, N, s) on the trunk";
   log_lines_.line(wall_seconds(), done);
   answer(message.request_id, true, done);

@@ -14,6 +14,7 @@
 #include "backend/fault_injecting_backend.hpp"
 #include "backend/simulation.hpp"
 #include "io/common/adapter_thread.hpp"
+#include "io/common/count.hpp"
 #include "io/common/link_faults.hpp"
 #include "io/common/rate_limited_log.hpp"
 
@@ -28,9 +29,9 @@ inline constexpr const char* kSimCommandChannel = "sim_command";
 inline constexpr const char* kSimCommandResultChannel = "sim_command_result";
 
 struct SimControlCounters {
-  std::uint64_t taken = 0;
-  std::uint64_t refused = 0;    // well-formed packets with a command the simulation does not do
-  std::uint64_t malformed = 0;  // wrong fingerprint, truncated, oversized
+  Count taken;
+  Count refused;    // well-formed packets with a command the simulation does not do
+  Count malformed;  // wrong fingerprint, truncated, oversized
 };
 
 class SimControlAdapter {
@@ -58,9 +59,7 @@ class SimControlAdapter {
   std::FILE* log_;
   std::unique_ptr<lcm::LCM> lcm_;
   RateLimitedLog log_lines_;
-  std::atomic<std::uint64_t> taken_{0};
-  std::atomic<std::uint64_t> refused_{0};
-  std::atomic<std::uint64_t> malformed_{0};
+  SimControlCounters counts_;  // the adapter's thread counts, anyone reads
   bool finished_ = false;
   // last member: started once everything above is built, stopped first
   AdapterThread thread_;

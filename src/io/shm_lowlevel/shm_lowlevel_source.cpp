@@ -69,7 +69,7 @@ bool ShmLowLevelSource::on_substep(const SensorFrame& frame, JointCommand& comma
   last_time_s_ = frame.time_s;
   take_command(frame);
   publish_state(frame);
-  cycles_.fetch_add(1, std::memory_order_relaxed);
+  counts_.cycles.add();
   if (!latched_) return false;
   command = active_;
   return true;
@@ -87,7 +87,7 @@ void ShmLowLevelSource::take_command(const SensorFrame& frame) {
 
   const ShmCommandCheck check = decode_shm_command(command_legs_, command_limits_, decoded_);
   if (!check.ok()) {
-    frames_rejected_.fetch_add(1, std::memory_order_relaxed);
+    counts_.frames_rejected.add();
     ShmEvent event;
     event.kind = ShmEventKind::FrameRejected;
     event.time_s = frame.time_s;
@@ -96,7 +96,7 @@ void ShmLowLevelSource::take_command(const SensorFrame& frame) {
     note_missed_cycle(frame);
     return;
   }
-  frames_taken_.fetch_add(1, std::memory_order_relaxed);
+  counts_.frames_taken.add();
   if (timed_out_) {
     timed_out_ = false;
     ShmEvent event;
@@ -111,7 +111,7 @@ void ShmLowLevelSource::take_command(const SensorFrame& frame) {
 
 void ShmLowLevelSource::note_missed_cycle(const SensorFrame& frame) {
   if (!command_active_) return;
-  missed_cycles_.fetch_add(1, std::memory_order_relaxed);
+  counts_.missed_cycles.add();
   // the last frame repeats until the client has been silent for the whole timeout
   if (++missed_in_row_ < config_.command_timeout_cycles) return;
   command_active_ = false;
@@ -119,7 +119,7 @@ void ShmLowLevelSource::note_missed_cycle(const SensorFrame& frame) {
   refusal_reported_ = false;
   // the motors brake the joints and the robot sinks down
   active_ = damping_command(damping_kd_, frame.q);
-  command_timeouts_.fetch_add(1, std::memory_order_relaxed);
+  counts_.command_timeouts.add();
   ShmEvent event;
   event.kind = ShmEventKind::CommandTimedOut;
   event.time_s = frame.time_s;
@@ -154,7 +154,7 @@ void ShmLowLevelSource::on_latched(const RobotState& state) {
 }
 
 void ShmLowLevelSource::on_refused(const char* holder) {
-  refusals_.fetch_add(1, std::memory_order_relaxed);
+  counts_.refusals.add();
   if (refusal_reported_) return;
   refusal_reported_ = true;
   ShmEvent event;
@@ -166,15 +166,6 @@ void ShmLowLevelSource::on_refused(const char* holder) {
 
 void ShmLowLevelSource::compute(const RobotState&, JointCommand& command) { command = active_; }
 
-ShmLowLevelCounters ShmLowLevelSource::counters() const {
-  ShmLowLevelCounters c;
-  c.cycles = cycles_.load(std::memory_order_relaxed);
-  c.frames_taken = frames_taken_.load(std::memory_order_relaxed);
-  c.frames_rejected = frames_rejected_.load(std::memory_order_relaxed);
-  c.missed_cycles = missed_cycles_.load(std::memory_order_relaxed);
-  c.command_timeouts = command_timeouts_.load(std::memory_order_relaxed);
-  c.refusals = refusals_.load(std::memory_order_relaxed);
-  return c;
-}
+ShmLowLevelCounters ShmLowLevelSource::counters() const { return counts_; }
 
 }  // namespace cerebellum

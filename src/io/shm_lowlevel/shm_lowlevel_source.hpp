@@ -11,6 +11,7 @@
 #include <cstdio>
 
 #include "cycle/substep_participant.hpp"
+#include "io/common/count.hpp"
 #include "modes/source_arbiter.hpp"
 #include "io/shm_lowlevel/shm_codec.hpp"
 #include "io/shm_lowlevel/shm_event_log.hpp"
@@ -22,12 +23,12 @@ namespace cerebellum {
 
 // cumulative, readable from any thread
 struct ShmLowLevelCounters {
-  std::uint64_t cycles = 0;            // 1 ms updates of the shared memory
-  std::uint64_t frames_taken = 0;      // valid command frames read (whether or not in control)
-  std::uint64_t frames_rejected = 0;   // frames with NaN/Inf or gains out of bounds
-  std::uint64_t missed_cycles = 0;     // cycles without a new valid frame while a command was active
-  std::uint64_t command_timeouts = 0;  // times the command was dropped for damping
-  std::uint64_t refusals = 0;          // ticks the arbiter refused this source
+  Count cycles;            // 1 ms updates of the shared memory
+  Count frames_taken;      // valid command frames read (whether or not in control)
+  Count frames_rejected;   // frames with NaN/Inf or gains out of bounds
+  Count missed_cycles;     // cycles without a new valid frame while a command was active
+  Count command_timeouts;  // times the command was dropped for damping
+  Count refusals;          // ticks the arbiter refused this source
 };
 
 class ShmLowLevelSource final : public LowLevelSource, public SubstepParticipant {
@@ -93,12 +94,7 @@ class ShmLowLevelSource final : public LowLevelSource, public SubstepParticipant
   leg_state_t state_legs_[kNumLegs]{};
   nav_imu_t imu_frame_{};
 
-  std::atomic<std::uint64_t> cycles_{0};
-  std::atomic<std::uint64_t> frames_taken_{0};
-  std::atomic<std::uint64_t> frames_rejected_{0};
-  std::atomic<std::uint64_t> missed_cycles_{0};
-  std::atomic<std::uint64_t> command_timeouts_{0};
-  std::atomic<std::uint64_t> refusals_{0};
+  ShmLowLevelCounters counts_;  // the loop thread counts, anyone reads
 };
 
 }  // namespace cerebellum

@@ -49,8 +49,8 @@ int open_socket(const AlienGoUdpConfig& config, int& bound_port) {
 
 }  // namespace
 
-UdpAliengoAdapter::UdpAliengoAdapter(HighLevelMachine& machine, AlienGoSource& source,
-                                     const AlienGoUdpConfig& config, std::FILE* log)
+UdpAliengoAdapter::UdpAliengoAdapter(HighLevelMachine& machine, AlienGoSource& source, const AlienGoUdpConfig& config,
+                                     std::FILE* log)
     : machine_(machine),
       source_(source),
       log_(log),
@@ -92,27 +92,26 @@ void UdpAliengoAdapter::step() {
     receive_through(size > buffer_.size() ? nullptr : link_faults_.load(), buffer_.data(), size, wall_seconds(),
                     [&](const std::uint8_t* data, std::size_t length) { handle_datagram(data, length, sender); });
   }
-  release_due(link_faults_.load(), wall_seconds(), [&](const std::uint8_t* data, std::size_t length) {
-    handle_datagram(data, length, newest_sender_);
-  });
+  release_due(link_faults_.load(), wall_seconds(),
+              [&](const std::uint8_t* data, std::size_t length) { handle_datagram(data, length, newest_sender_); });
   log_refusals(wall_seconds());
   log_once_per_second();
 }
 
 void UdpAliengoAdapter::handle_datagram(const std::uint8_t* data, std::size_t size, const sockaddr_in& sender) {
-  received_.fetch_add(1, std::memory_order_relaxed);
+  counts_.received.add();
   AlienGoCommand command;
   // MSG_TRUNC: size is the datagram's real length even when it did not fit the buffer
   const AlienGoDecode decoded =
       size > buffer_.size() ? AlienGoDecode::WrongLength : decode_high_cmd(data, size, command);
   switch (decoded) {
     case AlienGoDecode::Ok: break;
-    case AlienGoDecode::WrongLength: wrong_length_.fetch_add(1, std::memory_order_relaxed); return;
-    case AlienGoDecode::BadCrc: bad_crc_.fetch_add(1, std::memory_order_relaxed); return;
-    case AlienGoDecode::LowLevel: low_level_.fetch_add(1, std::memory_order_relaxed); return;
-    case AlienGoDecode::NonFinite: non_finite_.fetch_add(1, std::memory_order_relaxed); return;
+    case AlienGoDecode::WrongLength: counts_.wrong_length.add(); return;
+    case AlienGoDecode::BadCrc: counts_.bad_crc.add(); return;
+    case AlienGoDecode::LowLevel: counts_.low_level.add(); return;
+    case AlienGoDecode::NonFinite: counts_.non_finite.add(); return;
   }
-  accepted_.fetch_add(1, std::memory_order_relaxed);
+  counts_.accepted.add();
   // the sport session decides in the tick; a full ring (faster than the tick takes) is counted there
   source_.push(command);
   answer(sender);
@@ -141,7 +140,7 @@ void UdpAliengoAdapter::answer(const sockaddr_in& sender) {
   encode_high_state(make_feedback(newest_.state, newest_.aliengo_mode), frame);
   const ssize_t sent =
       ::sendto(socket_, frame, sizeof frame, 0, reinterpret_cast<const sockaddr*>(&sender), sizeof sender);
-  (sent == static_cast<ssize_t>(sizeof frame) ? states_sent_ : send_errors_).fetch_add(1, std::memory_order_relaxed);
+  (sent == static_cast<ssize_t>(sizeof frame) ? counts_.states_sent : counts_.send_errors).add();
 }
 
 void UdpAliengoAdapter::log_once_per_second() {
@@ -185,16 +184,8 @@ void UdpAliengoAdapter::log_once_per_second() {
 }
 
 AlienGoCounters UdpAliengoAdapter::counters() const {
-  AlienGoCounters c;
-  c.received = received_.load();
-  c.accepted = accepted_.load();
-  c.wrong_length = wrong_length_.load();
-  c.bad_crc = bad_crc_.load();
-  c.low_level = low_level_.load();
-  c.non_finite = non_finite_.load();
+  AlienGoCounters c = counts_;
   c.illegal_moves = source_.counters().illegal_moves.load();
-  c.states_sent = states_sent_.load();
-  c.send_errors = send_errors_.load();
   constexpr auto kSource = static_cast<std::size_t>(HighLevelSource::AlienGoUdp);
   c.refused_not_holder = machine_.counters().refused_not_holder[kSource].load();
   c.timeouts = machine_.counters().timeouts[kSource].load();

@@ -16,6 +16,7 @@
 #include "core/spsc_ring.hpp"
 #include "cycle/cycle_observer.hpp"
 #include "io/common/adapter_thread.hpp"
+#include "io/common/count.hpp"
 #include "io/common/link_faults.hpp"
 #include "io/common/rate_limited_log.hpp"
 #include "io/udp_aliengo/aliengo_wire.hpp"
@@ -25,19 +26,21 @@
 
 namespace cerebellum {
 
+// the adapter's thread counts the first ones; the last four are the AlienGo client's figures in
+// the machine and its stage, filled in by counters()
 struct AlienGoCounters {
-  std::uint64_t received = 0;  // datagrams
-  std::uint64_t accepted = 0;  // good HighCmd frames
-  std::uint64_t wrong_length = 0;
-  std::uint64_t bad_crc = 0;
-  std::uint64_t low_level = 0;
-  std::uint64_t non_finite = 0;
-  std::uint64_t illegal_moves = 0;  // refused by the vendor's mode table (the robot stays)
-  std::uint64_t states_sent = 0;
-  std::uint64_t send_errors = 0;
-  std::uint64_t refused_not_holder = 0;  // the CyberDog2 LCM client held the robot
-  std::uint64_t ring_overflow = 0;       // commands arriving faster than the loop takes them (dropped)
-  std::uint64_t timeouts = 0;            // the client held the robot and fell silent for 0.5 s
+  Count received;  // datagrams
+  Count accepted;  // good HighCmd frames
+  Count wrong_length;
+  Count bad_crc;
+  Count low_level;
+  Count non_finite;
+  Count states_sent;
+  Count send_errors;
+  Count illegal_moves;       // refused by the vendor's mode table (the robot stays)
+  Count refused_not_holder;  // the CyberDog2 LCM client held the robot
+  Count ring_overflow;       // commands arriving faster than the loop takes them (dropped)
+  Count timeouts;            // the client held the robot and fell silent for 0.5 s
 };
 
 class UdpAliengoAdapter final : public CycleObserver {
@@ -94,8 +97,7 @@ class UdpAliengoAdapter final : public CycleObserver {
   std::uint64_t logged_overflow_ = 0;
   std::uint64_t logged_timeouts_ = 0;
   // interface thread -> anyone
-  std::atomic<std::uint64_t> received_{0}, accepted_{0}, wrong_length_{0}, bad_crc_{0}, low_level_{0}, non_finite_{0},
-      states_sent_{0}, send_errors_{0};
+  AlienGoCounters counts_;
   // last member: started once everything above is built, stopped first
   AdapterThread thread_;
 };

@@ -182,6 +182,7 @@ TEST(UdpAliengoEndpoint, AFloodFromSeveralSendersAtTenKilohertzLeavesTheRobotSta
   flooding.store(false);
   for (auto& t : senders) t.join();
   e.run(0.5);
+  e.adapter.finish(stderr);  // its thread stopped: the counters are final and agree with each other
   const AlienGoCounters c = e.adapter.counters();
   EXPECT_GE(sent.load(), c.received);
   EXPECT_EQ(c.accepted + c.wrong_length + c.bad_crc, c.received);
@@ -212,6 +213,7 @@ TEST(UdpAliengoEndpoint, AStreamFasterThanTheAdapterReadsKeepsItsRobotStandingAn
   }
   flooding.store(false);
   sender.join();
+  e.adapter.finish(stderr);  // its thread stopped: the counters are final and agree with each other
   const AlienGoCounters c = e.adapter.counters();
   EXPECT_EQ(c.timeouts, 0u) << "a streaming client was judged silent";
   EXPECT_EQ(e.mc.machine().holder(), HighLevelSource::AlienGoUdp);
