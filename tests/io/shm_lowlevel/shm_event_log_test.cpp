@@ -23,20 +23,25 @@ int count_of(const std::string& text, const std::string& what) {
   return count;
 }
 
+// a client's NaN kp in `count` frames, one a millisecond from t = 0
+void post_rejected_frames(ShmEventLog& log, int count) {
+  for (int i = 0; i < count; ++i) {
+    ShmEvent event;
+    event.kind = ShmEventKind::FrameRejected;
+    event.time_s = i * 0.001;
+    event.check.fault = ShmCommandFault::NonFinite;
+    event.check.field = ShmCommandField::Kp;
+    event.check.value = std::nan("");
+    log.post(event);
+  }
+}
+
 // a client writing a NaN frame every millisecond must not write a log line every millisecond
 TEST(ShmEventLog, AFloodOfRejectedFramesPrintsAFewLinesAndCountsTheRest) {
   std::FILE* file = std::tmpfile();
   {
     ShmEventLog log(file);
-    for (int i = 0; i < 60; ++i) {
-      ShmEvent event;
-      event.kind = ShmEventKind::FrameRejected;
-      event.time_s = i * 0.001;
-      event.check.fault = ShmCommandFault::NonFinite;
-      event.check.field = ShmCommandField::Kp;
-      event.check.value = std::nan("");
-      log.post(event);
-    }
+    post_rejected_frames(log, 60);
     log.flush();
     const std::string text = text_of(file);
     EXPECT_EQ(count_of(text, "command frame rejected"), 5) << text;
@@ -54,13 +59,7 @@ TEST(ShmEventLog, TheLineThatAnotherSourceHasTheRobotIsPrintedThroughAFloodOfRej
   std::FILE* file = std::tmpfile();
   {
     ShmEventLog log(file);
-    for (int i = 0; i < 40; ++i) {
-      ShmEvent event;
-      event.kind = ShmEventKind::FrameRejected;
-      event.time_s = i * 0.001;
-      event.check.fault = ShmCommandFault::NonFinite;
-      log.post(event);
-    }
+    post_rejected_frames(log, 40);
     ShmEvent refused;
     refused.kind = ShmEventKind::Refused;
     refused.time_s = 0.05;
