@@ -9,10 +9,8 @@
 namespace cerebellum {
 namespace {
 
-std::string port_list() { return lcm_port_list(); }
-
 int parse_port(const std::string& text) {
-  const std::string accepted = "one of the interface ports " + port_list();
+  const std::string accepted = "one of the interface ports " + lcm_port_list();
   const double value = option_number("--port", text, accepted);
   const auto& ports = interface_ports();
   if (std::find(ports.begin(), ports.end(), value) == ports.end()) {
@@ -56,7 +54,7 @@ std::string log_usage() {
          "  records every channel of the interface with lcm-logger, one file per LCM port:\n"
          "  PREFIX.<port>.lcmlog, until Ctrl-C. PREFIX default: cerebellum-<date>-<time>\n"
          "  --port P   only this port (repeatable): " +
-         port_list() +
+         lcm_port_list() +
          "\n"
          "  --force    overwrite existing files\n";
 }
@@ -68,7 +66,7 @@ std::string replay_usage() {
          "  --speed X  playback speed (X > 0, default 1)\n"
          "  --ttl N    multicast ttl (0..255, default 0: this machine only)\n"
          "  --port P   only this port (repeatable): " +
-         port_list() + "\n";
+         lcm_port_list() + "\n";
 }
 
 LogOptions parse_log_options(const std::vector<std::string>& args) {

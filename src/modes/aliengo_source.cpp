@@ -4,19 +4,6 @@ namespace cerebellum {
 
 AlienGoSource::AlienGoSource(const AlienGoSessionConfig& config) : session_(config) {}
 
-bool AlienGoSource::push(const AlienGoCommand& command) {
-  if (!producer_.held_by_caller()) {
-    counters_.wrong_thread.fetch_add(1, std::memory_order_relaxed);
-    return false;
-  }
-  if (!ring_.try_push(command)) {
-    counters_.ring_overflow.fetch_add(1, std::memory_order_relaxed);
-    return false;
-  }
-  counters_.handed_over.fetch_add(1, std::memory_order_relaxed);
-  return true;
-}
-
 void AlienGoSource::submit(const AlienGoStep& step, double now_s, Commands& out, std::size_t& made) {
   if (!step.submit || made == out.size()) return;
   out[made++] = TimedCommand{*step.submit, now_s, HighLevelSource::AlienGoUdp};
@@ -37,7 +24,7 @@ std::size_t AlienGoSource::step(const RobotState& state, const HighLevelStatus& 
     if (!command) break;
     const AlienGoStep step = session_.on_command(*command, state, status.mode, status.order_process_bar, now_s);
     if (step.refusal != nullptr) {
-      counters_.illegal_moves.fetch_add(1, std::memory_order_relaxed);
+      ring_.counters().illegal_moves.fetch_add(1, std::memory_order_relaxed);
       refusals_.try_push({command->mode, session_.mode(), step.refusal});
     }
     submit(step, now_s, out, made);

@@ -8,7 +8,7 @@
 #include <atomic>
 #include <cstdint>
 
-#include "core/producer_claim.hpp"
+#include "core/claimed_ring.hpp"
 #include "core/spsc_ring.hpp"
 #include "modes/aliengo_session.hpp"
 #include "modes/source_stage.hpp"
@@ -22,10 +22,9 @@ struct AlienGoRefusal {
   const char* reason = nullptr;  // a static string
 };
 
-struct AlienGoSourceCounters {
-  std::atomic<std::uint64_t> handed_over{0};    // HighCmds taken into the ring
-  std::atomic<std::uint64_t> ring_overflow{0};  // arriving faster than the tick takes them (dropped)
-  std::atomic<std::uint64_t> wrong_thread{0};   // a second thread handed over (refused)
+// the ring's (HighCmds handed over, dropped for arriving faster than the tick takes them, refused
+// from a second thread) and the session's
+struct AlienGoSourceCounters : ClaimedRingCounters {
   std::atomic<std::uint64_t> illegal_moves{0};  // refused by the vendor's mode table
 };
 
@@ -37,7 +36,7 @@ class AlienGoSource final : public SourceStage {
 
   // the transport's thread (one thread): a decoded HighCmd; false when the ring is full or
   // another thread already hands over
-  bool push(const AlienGoCommand& command);
+  bool push(const AlienGoCommand& command) { return ring_.push(command); }
 
   // loop thread
   std::size_t step(const RobotState& state, const HighLevelStatus& status, Commands& out) override;
@@ -46,16 +45,14 @@ class AlienGoSource final : public SourceStage {
   const AlienGoSession& session() const { return session_; }
 
   // any thread
-  const AlienGoSourceCounters& counters() const { return counters_; }
+  const AlienGoSourceCounters& counters() const { return ring_.counters(); }
   // the loop thread pushes, one consumer thread (the adapter's) pops
   SpscRing<AlienGoRefusal, 16>& refusals() { return refusals_; }
 
  private:
   void submit(const AlienGoStep& step, double now_s, Commands& out, std::size_t& made);
 
-  ProducerClaim producer_;
-  SpscRing<AlienGoCommand, kRingCapacity> ring_;
-  AlienGoSourceCounters counters_;
+  ClaimedRing<AlienGoCommand, kRingCapacity, AlienGoSourceCounters> ring_;
   SpscRing<AlienGoRefusal, 16> refusals_;
   // loop thread
   AlienGoSession session_;

@@ -10,18 +10,14 @@
 #include <cstddef>
 #include <cstdint>
 
-#include "core/producer_claim.hpp"
-#include "core/spsc_ring.hpp"
+#include "core/claimed_ring.hpp"
 #include "core/high_level_command.hpp"
 
 namespace cerebellum {
 
 // what happened to one source's input (written by its producer and the loop, read by anyone)
-struct SourceInputCounters {
-  std::atomic<std::uint64_t> submitted{0};      // pushed into the ring
-  std::atomic<std::uint64_t> ring_overflow{0};  // the ring was full: the source sends faster than the loop takes
-  std::atomic<std::uint64_t> wrong_thread{0};   // refused: a second thread wrote this source's ring
-  std::atomic<std::uint64_t> taken{0};          // taken by the tick
+struct SourceInputCounters : ClaimedRingCounters {
+  std::atomic<std::uint64_t> taken{0};  // taken by the tick
 };
 
 class CommandInbox {
@@ -54,7 +50,7 @@ class CommandInbox {
         ++taken[source];
         ++total;
         any = true;
-        counters_[source].taken.fetch_add(1, std::memory_order_relaxed);
+        rings_[source].counters().taken.fetch_add(1, std::memory_order_relaxed);
         take_one(*input);
       }
     }
@@ -63,13 +59,11 @@ class CommandInbox {
   }
 
   const SourceInputCounters& counters(HighLevelSource source) const {
-    return counters_[static_cast<std::size_t>(source)];
+    return rings_[static_cast<std::size_t>(source)].counters();
   }
 
  private:
-  std::array<SpscRing<TimedCommand, kRingCapacity>, kHighLevelSourceCount> rings_;
-  std::array<ProducerClaim, kHighLevelSourceCount> producers_;
-  std::array<SourceInputCounters, kHighLevelSourceCount> counters_;
+  std::array<ClaimedRing<TimedCommand, kRingCapacity, SourceInputCounters>, kHighLevelSourceCount> rings_;
   std::size_t first_source_ = 0;  // loop thread
 };
 
