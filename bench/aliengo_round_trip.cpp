@@ -121,7 +121,8 @@ void high_cmd_to_high_state(benchmark::State& state, double seconds) {
     config.aliengo.port = 0;
     Mc mc = make_simulated_mc(config);
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> log(std::fopen("/dev/null", "w"), &std::fclose);
-    UdpAliengoAdapter adapter(mc.machine(), mc.aliengo_source(), config.aliengo, log.get());
+    UdpAliengoAdapter adapter(mc.client_port(HighLevelSource::AlienGoUdp), mc.aliengo_source().inbox(), config.aliengo,
+                              log.get());
     mc.loop().add_observer(adapter);
     std::atomic<bool> stop{false};
     RunStats stats;

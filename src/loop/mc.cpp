@@ -41,8 +41,9 @@ Mc::Mc(const McConfig& config, McRobot robot)
       simulation_(robot.simulation),
       faults_(robot.faults),
       modes_(mode_set_config(config)),
+      user_gait_upload_(modes_.user_gait_slot()),
       machine_(config.loop_period_s, startup_command(config.startup)),
-      aliengo_(config.aliengo.session),
+      aliengo_(config.aliengo_session),
       arbiter_(machine_),
       loop_(require_backend(backend_), estimator_, arbiter_, config.safety, config.loop_period_s) {
   modes_.add_to(machine_);

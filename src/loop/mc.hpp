@@ -13,6 +13,7 @@
 #include "modes/high_level_machine.hpp"
 #include "modes/mode_set.hpp"
 #include "modes/source_arbiter.hpp"
+#include "motions/user_gait_upload.hpp"
 
 namespace cerebellum {
 
@@ -38,6 +39,11 @@ class Mc {
   AlienGoSource& aliengo_source() { return aliengo_; }
   // where the high-level interface hands over uploaded user gaits
   UserGaitSlot& user_gait_slot() { return modes_.user_gait_slot(); }
+  // where a transport hands received user-gait files (checked, stored, built into the slot)
+  UserGaitUpload& user_gait_upload() { return user_gait_upload_; }
+  // what each high-level client's transport is given: its ring into the tick, its refusals, its
+  // counters (the AlienGo transport also gets aliengo_source().inbox())
+  ClientPort client_port(HighLevelSource source) { return machine_.port(source); }
   SourceArbiter& arbiter() { return arbiter_; }
   ControlLoop& loop() { return loop_; }
   const McConfig& config() const { return config_; }
@@ -51,6 +57,7 @@ class Mc {
   FaultInjectingBackend* faults_;
   BodyStateEstimator estimator_;
   ModeSet modes_;
+  UserGaitUpload user_gait_upload_;
   HighLevelMachine machine_;
   AlienGoSource aliengo_;
   SourceArbiter arbiter_;

@@ -204,10 +204,10 @@ McConfig load_config(const std::string& path) {
     s.number("port", port, 0, 65535);
     if (port != std::floor(port)) s.fail("aliengo.port", "must be a whole number in [0, 65535]");
     config.aliengo.port = static_cast<int>(port);
-    s.number("silence_stand_s", config.aliengo.session.silence_stand_s, 0.05, 0.45);
-    s.number("stand_hold_s", config.aliengo.session.stand_hold_s, 0.5, 10.0);
-    s.number("lie_down_s", config.aliengo.session.lie_down_s, 1.5, 10.0);
-    if (config.aliengo.session.stand_hold_s <= config.aliengo.session.silence_stand_s) {
+    s.number("silence_stand_s", config.aliengo_session.silence_stand_s, 0.05, 0.45);
+    s.number("stand_hold_s", config.aliengo_session.stand_hold_s, 0.5, 10.0);
+    s.number("lie_down_s", config.aliengo_session.lie_down_s, 1.5, 10.0);
+    if (config.aliengo_session.stand_hold_s <= config.aliengo_session.silence_stand_s) {
       s.fail("aliengo.stand_hold_s", "must be longer than aliengo.silence_stand_s");
     }
   }

@@ -14,6 +14,7 @@
 #include "io/lcm_sim_truth/sim_truth_config.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
 #include "io/udp_aliengo/udp_aliengo_config.hpp"
+#include "modes/aliengo_session.hpp"
 #include "modes/locomotion_stand.hpp"
 #include "motions/motion_folder.hpp"
 #include "safety/command_guard.hpp"
@@ -37,10 +38,11 @@ struct McConfig {
   ShmLowLevelConfig shm;
   MotorSdkConfig motor_sdk;
   HighLevelLcmConfig highlevel;
-  AlienGoUdpConfig aliengo;
-  MotionFolders motions;         // mode 62's motion files
-  SimTruthConfig sim_truth;      // simulation only
-  SimControlConfig sim_command;  // simulation only
+  AlienGoUdpConfig aliengo;              // the transport (section aliengo:)
+  AlienGoSessionConfig aliengo_session;  // the sport session's timers (section aliengo: too)
+  MotionFolders motions;                 // mode 62's motion files
+  SimTruthConfig sim_truth;              // simulation only
+  SimControlConfig sim_command;          // simulation only
 };
 
 // defaults, with the model found next to the build or install tree

@@ -20,12 +20,11 @@ std::size_t AlienGoSource::step(const RobotState& state, const HighLevelStatus& 
   std::size_t made = 0;
   std::size_t taken = 0;
   for (; taken < out.size(); ++taken) {
-    const std::optional<AlienGoCommand> command = ring_.try_pop();
+    const std::optional<AlienGoCommand> command = inbox_.take();
     if (!command) break;
     const AlienGoStep step = session_.on_command(*command, state, status.mode, status.order_process_bar, now_s);
     if (step.refusal != nullptr) {
-      ring_.counters().illegal_moves.fetch_add(1, std::memory_order_relaxed);
-      refusals_.try_push({command->mode, session_.mode(), step.refusal});
+      inbox_.refused({command->mode, session_.mode(), step.refusal});
     }
     submit(step, now_s, out, made);
   }

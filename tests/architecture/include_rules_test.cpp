@@ -5,6 +5,7 @@
 
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <regex>
 #include <set>
 #include <utility>
@@ -126,6 +127,35 @@ TEST(IncludeRules, EveryFolderIncludesOnlyWhatItsRowInTheArchitectureTableAllows
                            if (folder == file_folder) return !allowed.count(target_folder);
                          }
                          return true;  // a folder without a row
+                       }),
+            "");
+}
+
+// the hand-over headers the page names: "`io/` may include from `modes/` only these: ..."
+std::set<std::string> io_hand_over_headers() {
+  std::ifstream in(fs::path(CEREBELLUM_SOURCE_DIR) / "docs" / "architecture.md");
+  std::string page((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  const std::string marker = "may include from `modes/` only these:";
+  const std::size_t start = page.find(marker);
+  std::set<std::string> headers;
+  if (start == std::string::npos) return headers;
+  const std::string sentence = page.substr(start, page.find(';', start) - start);
+  const std::regex header("`(modes/[a-z_]+\\.hpp)`");
+  for (auto it = std::sregex_iterator(sentence.begin(), sentence.end(), header); it != std::sregex_iterator(); ++it) {
+    headers.insert((*it)[1].str());
+  }
+  return headers;
+}
+
+TEST(IncludeRules, AnAdapterReachesTheModesOnlyThroughTheHandOverHeaders) {
+  const std::set<std::string> allowed = io_hand_over_headers();
+  ASSERT_GE(allowed.size(), 2u) << "docs/architecture.md names the hand-over headers";
+  for (const std::string& header : allowed) {
+    EXPECT_TRUE(fs::exists(fs::path(CEREBELLUM_SOURCE_DIR) / "src" / header)) << header;
+  }
+  EXPECT_EQ(violations(project_includes(),
+                       [&](const Include& i) {
+                         return in_folder(i.file, "io") && in_folder(i.target, "modes") && !allowed.count(i.target);
                        }),
             "");
 }

@@ -252,7 +252,7 @@ TEST(McJumps, AClientThatVanishesMidJumpHasTheRobotLandBeforeItIsDamped) {
   EXPECT_TRUE(damped);
   EXPECT_FALSE(damped_before_landing);
   EXPECT_LT(largest_tilt, 0.6);
-  EXPECT_EQ(run.mc.machine().counters().timeouts[0].load(), 1u);
+  EXPECT_EQ(run.mc.machine().counters(HighLevelSource::CyberDog2Lcm).timeouts.load(), 1u);
 }
 
 TEST(McJumps, AFlipIsRefusedWithOverHeatWhileAMotorReadsAboveSeventyFourDegrees) {

@@ -89,11 +89,10 @@ TEST(CommandQueue, HoldCommandFollowsTheLastTimedEntry) {
   struct Case {
     int mode, gait, hold_mode, hold_gait;
   };
-  for (const Case c :
-       {Case{3, 0, 3, 1}, Case{11, 27, 11, 1}, Case{11, 110, 11, 31}, Case{12, 0, 21, 3}, Case{21, 5, 21, 3},
-        Case{62, 2, 21, 3},
-        // 7 -> 21 is not allowed: PureDamper holds itself instead of a refused pose hold
-        Case{7, 1, 7, 1}}) {
+  for (const Case c : {Case{3, 0, 3, 1}, Case{11, 27, 11, 1}, Case{11, 110, 11, 31}, Case{12, 0, 21, 3},
+                       Case{21, 5, 21, 3}, Case{62, 2, 21, 3},
+                       // 7 -> 21 is not allowed: PureDamper holds itself instead of a refused pose hold
+                       Case{7, 1, 7, 1}}) {
     CommandQueue queue(0.002);
     HighLevelCommand timed = cmd(c.mode, c.gait, 1, 2);
     timed.vel_des = {0.5f, 0.1f, 0.2f};

@@ -67,10 +67,12 @@ TEST(HighLevelMachineFlood, TwoClientThreadsFloodingAtOnceLoseNothingAreCredited
   EXPECT_EQ(m.machine.input_counters(kLcm).taken.load(), kEach) << "every LCM command taken once";
   EXPECT_EQ(m.machine.input_counters(kAlienGo).taken.load(), kEach) << "every AlienGo command taken once";
   EXPECT_EQ(m.machine.counters().received.load() - received_before, kEach) << "the holder's commands, all of them";
-  EXPECT_EQ(m.machine.counters().refused_not_holder[static_cast<std::size_t>(kAlienGo)].load(), kEach)
+  EXPECT_EQ(m.machine.counters(kAlienGo).refused_not_holder.load(), kEach)
       << "the other client's commands, each refused as its own";
-  EXPECT_EQ(m.machine.counters().refused_not_holder[static_cast<std::size_t>(kLcm)].load(), 0u);
-  EXPECT_EQ(m.machine.counters().timeouts[0].load() + m.machine.counters().timeouts[1].load(), 0u);
+  EXPECT_EQ(m.machine.counters(kLcm).refused_not_holder.load(), 0u);
+  EXPECT_EQ(m.machine.counters(HighLevelSource::CyberDog2Lcm).timeouts.load() +
+                m.machine.counters(HighLevelSource::AlienGoUdp).timeouts.load(),
+            0u);
   EXPECT_EQ(m.machine.status().mode, static_cast<int>(ModeId::RecoveryStand)) << "no AlienGo command ever ran";
   EXPECT_EQ(m.damper.entered, 0);
 }
@@ -109,7 +111,8 @@ TEST(HighLevelMachineFlood, AClientFloodingFromItsThreadCostsOnlyItselfTheHolder
   EXPECT_EQ(m.machine.input_counters(kLcm).ring_overflow.load(), 0u);
   EXPECT_GT(m.machine.input_counters(kAlienGo).submitted.load(), 0u) << "the flood reached the machine";
   EXPECT_EQ(m.machine.holder(), kLcm);
-  EXPECT_EQ(m.machine.counters().timeouts[0].load(), 0u) << "the holder was never judged silent";
+  EXPECT_EQ(m.machine.counters(HighLevelSource::CyberDog2Lcm).timeouts.load(), 0u)
+      << "the holder was never judged silent";
   EXPECT_EQ(m.machine.status().mode, static_cast<int>(ModeId::Locomotion));
   EXPECT_EQ(m.damper.entered, 0) << "the flood never laid the robot down";
 }

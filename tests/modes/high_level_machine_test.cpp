@@ -139,7 +139,7 @@ TEST(HighLevelMachine, SilentClientSendsTheRobotToPureDamperAfterHalfASecond) {
   m.tick();
   m.tick();
   EXPECT_EQ(m.machine.status().mode, 7);
-  EXPECT_EQ(m.machine.counters().timeouts[0].load(), 1u);
+  EXPECT_EQ(m.machine.counters(HighLevelSource::CyberDog2Lcm).timeouts.load(), 1u);
 }
 
 TEST(HighLevelMachine, SilentClientLeavesOffAlone) {
@@ -299,7 +299,7 @@ TEST(HighLevelMachine, WhileALowLevelClientHoldsTheRobotTheResponseIsLiveAndNewC
   }
   EXPECT_EQ(m.machine.counters().banned_transitions.load(), 1u);
   EXPECT_EQ(m.machine.input_counters(HighLevelSource::CyberDog2Lcm).ring_overflow.load(), 0u);
-  EXPECT_EQ(m.machine.counters().timeouts[0].load(), 0u);
+  EXPECT_EQ(m.machine.counters(HighLevelSource::CyberDog2Lcm).timeouts.load(), 0u);
   m.machine.submit(cmd(ModeId::Locomotion, 3, 2), m.state.time_s);
   arbiter.compute(m.state, command);
   EXPECT_EQ(m.machine.counters().banned_transitions.load(), 2u);
@@ -336,7 +336,7 @@ TEST(HighLevelLease, TheFirstClientHoldsTheRobotAndTheOtherIsRefusedWithItsReaso
   }
   EXPECT_EQ(m.machine.status().mode, 11);
   EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::BanTransition);
-  EXPECT_EQ(m.machine.counters().refused_not_holder[0].load(), 10u);
+  EXPECT_EQ(m.machine.counters(HighLevelSource::CyberDog2Lcm).refused_not_holder.load(), 10u);
   const auto note = m.machine.refusals().try_pop();
   ASSERT_TRUE(note.has_value());
   EXPECT_STREQ(note->holder, source_name(HighLevelSource::AlienGoUdp));
@@ -356,8 +356,8 @@ TEST(HighLevelLease, PassesToTheOtherClientOnceTheHolderIsSilentPastTheTimeout) 
   m.tick();
   EXPECT_EQ(m.machine.holder(), HighLevelSource::AlienGoUdp);
   EXPECT_EQ(m.machine.status().mode, 12);
-  EXPECT_EQ(m.machine.counters().lease_handovers.load(), 1u);
-  EXPECT_EQ(m.machine.counters().refused_not_holder[1].load(), 0u);
+  EXPECT_EQ(m.machine.machine_counters().lease_handovers.load(), 1u);
+  EXPECT_EQ(m.machine.counters(HighLevelSource::AlienGoUdp).refused_not_holder.load(), 0u);
 }
 
 }  // namespace

@@ -188,7 +188,7 @@ TEST(MotionSim, AClientThatVanishesMidHandShakeLeavesTheRobotDampedAndUpright) {
   // the loop runs on, nobody sends: after 0.5 s the MC damps the joints (get-down protection)
   for (int i = 0; i < 2000; ++i) sim.loop.tick();
   EXPECT_EQ(sim.status().mode, 7);
-  EXPECT_EQ(sim.machine.counters().timeouts[0].load(), 1u);
+  EXPECT_EQ(sim.machine.counters(HighLevelSource::CyberDog2Lcm).timeouts.load(), 1u);
   // down on its belly, not on its side or back
   EXPECT_LT(std::abs(sim.true_rpy().x()), 0.5);
   EXPECT_LT(std::abs(sim.true_rpy().y()), 0.5);

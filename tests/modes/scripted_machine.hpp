@@ -25,10 +25,14 @@ class ScriptedMode final : public Mode {
   int progress_percent() const override { return progress; }
   bool damping_protection() const override { return damping; }
   StartRefusal start_refusal(const RobotState&, const HighLevelCommand&) const override { return refusal; }
+  void exit() override { ++exited; }
+  bool must_finish() const override { return finishing; }
 
   ContactPlan plan;
   StartRefusal refusal;
   bool damping = false;
+  bool finishing = false;
+  int exited = 0;
   int progress = 100;
   int entered = 0;
   int updated = 0;

@@ -5,8 +5,6 @@
 #include "io/common/wall_clock.hpp"
 #include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_highlevel/highlevel_wire.hpp"
-#include "motions/user_gait_file.hpp"
-#include "motions/user_gait_program.hpp"
 
 namespace cerebellum {
 namespace {
@@ -19,27 +17,12 @@ constexpr const char* kInterfaceName = "highlevel";
 constexpr int kRefusalLinesPerSecond = 5;
 constexpr int kGaitFileLinesPerSecond = 5;
 
-std::string describe_gait_file(const UserGaitFile& file) {
-  if (file.kind == UserGaitFile::Kind::Definition) {
-    int units = 0;
-    for (const GaitSection& section : file.definition.sections) units += section.duration_units;
-    char text[96];
-    std::snprintf(text, sizeof text, "gait definition: %zu sections, %.2f s", file.definition.sections.size(),
-                  units * kGaitSectionUnitS);
-    return text;
-  }
-  long duration_ms = 0;
-  for (const HighLevelCommand& step : file.parameters.steps) duration_ms += step.duration;
-  return "gait parameters: " + std::to_string(file.parameters.steps.size()) + " steps, " + std::to_string(duration_ms) +
-         " ms";
-}
-
 }  // namespace
 
-LcmHighLevelAdapter::LcmHighLevelAdapter(HighLevelMachine& machine, UserGaitSlot& user_gait_slot,
-                                         const HighLevelLcmConfig& config, double loop_period_s, std::FILE* log)
-    : machine_(machine),
-      slot_(user_gait_slot),
+LcmHighLevelAdapter::LcmHighLevelAdapter(ClientPort port, UserGaitUpload& user_gaits, const HighLevelLcmConfig& config,
+                                         double loop_period_s, std::FILE* log)
+    : port_(port),
+      user_gaits_(user_gaits),
       log_(log),
       keepalive_s_(config.response_keepalive_s),
       command_lcm_(open_lcm_url(config.command_url, kInterfaceName)),
@@ -101,7 +84,7 @@ void LcmHighLevelAdapter::handle_command(const std::uint8_t* data, std::size_t s
   HighLevelCommand command;
   switch (decode_robot_control_cmd(data, size, command)) {
     case WireDecode::Ok:
-      machine_.submit(command, robot_time_s_.load(std::memory_order_relaxed));
+      port_.submit(command, robot_time_s_.load(std::memory_order_relaxed));
       counts_.commands_submitted.add();
       return;
     case WireDecode::WrongFingerprint: counts_.wrong_fingerprint.add(); return;
@@ -118,26 +101,10 @@ void LcmHighLevelAdapter::on_gait_file(const lcm::ReceiveBuffer* buffer, const s
   if (decoded != WireDecode::Ok) {
     line = "user_gait_file refused (result 1): " + std::string(to_string(decoded)) + " packet of " +
            std::to_string(buffer->data_size) + " bytes";
-  } else if (const UserGaitParse parsed = parse_user_gait_file(text); !parsed.file) {
-    line = "user_gait_file refused (result 1): " + parsed.error;
-  } else if (const std::string unsafe = user_gait_file_problem(*parsed.file); !unsafe.empty()) {
-    line = "user_gait_file refused (result 1): " + unsafe + "; the previous gait is kept";
   } else {
-    accepted = true;
-    user_gaits_.store(*parsed.file);
-    line = "user_gait_file stored (result 0), " + describe_gait_file(*parsed.file);
-    const std::optional<UserGaitDefinition> definition = user_gaits_.definition();
-    const std::optional<UserGaitParameters> parameters = user_gaits_.parameters();
-    if (definition && parameters) {
-      const std::shared_ptr<const UserGaitProgram> program = build_user_gait_program(*definition, *parameters);
-      slot_.publish(program);
-      char ready[128];
-      std::snprintf(ready, sizeof(ready), "; ready to run (11/110, 62/110): %zu sections, %zu steps, %.2f s",
-                    definition->sections.size(), parameters->steps.size(), program->duration_s());
-      line += ready;
-    } else {
-      line += definition ? "; waiting for the parameters" : "; waiting for the definition";
-    }
+    const UserGaitUploadResult result = user_gaits_.receive(text);
+    accepted = result.accepted;
+    line = (accepted ? "user_gait_file stored (result 0), " : "user_gait_file refused (result 1): ") + result.detail;
   }
   gait_file_log_.line(wall_seconds(), line);
   (accepted ? counts_.gait_files_accepted : counts_.gait_files_refused).add();
@@ -182,7 +149,7 @@ void LcmHighLevelAdapter::log_refusals() {
   const double now_s = wall_seconds();
   refusal_log_.tick(now_s);
   gait_file_log_.tick(now_s);
-  while (std::optional<RefusalNote> note = machine_.refusals().try_pop()) {
+  while (std::optional<RefusalNote> note = port_.next_refusal()) {
     char line[256];
     if (note->holder != nullptr) {
       std::snprintf(line, sizeof line, "refused mode %d gait %d while in mode %d (switch_status 5 BAN_TRANS): %s (%s)",
@@ -196,17 +163,17 @@ void LcmHighLevelAdapter::log_refusals() {
 }
 
 LcmHighLevelAdapter::LoggedCounts LcmHighLevelAdapter::current_counts() const {
-  const CommandCounters& machine = machine_.counters();
+  const ClientCounters& client = port_.counters();
   LoggedCounts c;
   c.wrong_fingerprint = counts_.wrong_fingerprint.load();
   c.truncated = counts_.truncated.load();
   c.oversized = counts_.oversized.load();
-  c.non_finite = machine.rejected_non_finite.load();
-  c.queue_full = machine.queue_full.load();
-  const SourceInputCounters& input = machine_.input_counters(HighLevelSource::CyberDog2Lcm);
+  c.non_finite = client.rejected_non_finite.load();
+  c.queue_full = client.queue_full.load();
+  const SourceInputCounters& input = port_.input_counters();
   c.ring_overflow = input.ring_overflow.load();
   c.wrong_thread = input.wrong_thread.load();
-  c.timeouts = machine.timeouts[static_cast<std::size_t>(HighLevelSource::CyberDog2Lcm)].load();
+  c.timeouts = client.timeouts.load();
   c.telemetry_dropped = telemetry_.dropped();
   return c;
 }
@@ -245,7 +212,7 @@ void LcmHighLevelAdapter::finish(std::FILE* out) {
   thread_.stop();
   log_refusals();
   const HighLevelInterfaceCounters c = counters();
-  const CommandCounters& m = machine_.counters();
+  const ClientCounters& m = port_.counters();
   using ull = unsigned long long;
   std::fprintf(out,
                "highlevel: robot_control_cmd %llu received (%llu new commands), %llu refused (BAN_TRANS), "
@@ -254,9 +221,9 @@ void LcmHighLevelAdapter::finish(std::FILE* out) {
                "%llu stored, %llu refused; %llu feedback cycles dropped\n",
                ull(c.commands_submitted), ull(m.new_commands.load()), ull(m.banned_transitions.load()),
                ull(m.rejected_non_finite.load()), ull(m.queue_full.load()), ull(c.wrong_fingerprint), ull(c.truncated),
-               ull(c.oversized), ull(m.timeouts[static_cast<std::size_t>(HighLevelSource::CyberDog2Lcm)].load()),
-               ull(c.responses_published), ull(c.odometry_published), ull(c.temperatures_published),
-               ull(c.gait_files_accepted), ull(c.gait_files_refused), ull(c.telemetry_dropped));
+               ull(c.oversized), ull(m.timeouts.load()), ull(c.responses_published), ull(c.odometry_published),
+               ull(c.temperatures_published), ull(c.gait_files_accepted), ull(c.gait_files_refused),
+               ull(c.telemetry_dropped));
   std::fflush(out);
 }
 

@@ -1,6 +1,7 @@
 // The CyberDog2 high-level interface on LCM. One thread receives robot_control_cmd (raw, decoded
 // here so malformed packets are counted), stamps each command with the robot time of the newest
-// cycle and hands it to the HighLevelMachine; it answers user_gait_file, and publishes
+// cycle and hands it to the machine through its ClientPort; it hands user_gait_file texts to
+// motions/ (UserGaitUpload) and answers with the result, and publishes
 // robot_control_response, motor_temperature and global_to_robot from what the loop thread copies
 // into a ring. The loop thread only decides what is due and copies (on_cycle).
 // state_estimator and leg_control_data belong to LcmStateFeedback (io/lcm_motor_sdk), published once
@@ -22,9 +23,8 @@
 #include "io/common/rate_limited_log.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_highlevel/response_schedule.hpp"
-#include "motions/user_gait_store.hpp"
-#include "modes/user_gait.hpp"
-#include "modes/high_level_machine.hpp"
+#include "modes/client_port.hpp"
+#include "motions/user_gait_upload.hpp"
 
 namespace lcm {
 class LCM;
@@ -34,7 +34,7 @@ struct ReceiveBuffer;
 namespace cerebellum {
 
 struct HighLevelInterfaceCounters {
-  Count commands_submitted;  // robot_control_cmd packets handed to machine.submit
+  Count commands_submitted;  // robot_control_cmd packets handed to the port
   Count wrong_fingerprint;   // robot_control_cmd packets dropped ...
   Count truncated;
   Count oversized;
@@ -53,8 +53,9 @@ class LcmHighLevelAdapter final : public CycleObserver {
  public:
   // opens the three urls and starts the thread; throws std::runtime_error naming a url LCM cannot
   // open. log: where notes and warnings go (never written from the loop thread)
-  // user_gait_slot: where a gait whose definition and parameters are both valid is handed over
-  LcmHighLevelAdapter(HighLevelMachine& machine, UserGaitSlot& user_gait_slot, const HighLevelLcmConfig& config,
+  // port: the CyberDog2 LCM client's way into the machine; user_gaits: where received gait files
+  // are checked, stored and, once both halves are valid, handed to the loop
+  LcmHighLevelAdapter(ClientPort port, UserGaitUpload& user_gaits, const HighLevelLcmConfig& config,
                       double loop_period_s, std::FILE* log);
   ~LcmHighLevelAdapter() override;
   LcmHighLevelAdapter(const LcmHighLevelAdapter&) = delete;
@@ -68,7 +69,7 @@ class LcmHighLevelAdapter final : public CycleObserver {
   // stops the thread (publishing what is queued) and prints one summary line to out
   void finish(std::FILE* out);
   HighLevelInterfaceCounters counters() const;
-  const UserGaitStore& user_gaits() const { return user_gaits_; }
+  const UserGaitStore& user_gaits() const { return user_gaits_.store(); }
 
  private:
   struct Telemetry {
@@ -95,15 +96,14 @@ class LcmHighLevelAdapter final : public CycleObserver {
   void log_counts_once_per_second();
   LoggedCounts current_counts() const;
 
-  HighLevelMachine& machine_;
-  UserGaitSlot& slot_;
+  ClientPort port_;
+  UserGaitUpload& user_gaits_;
   std::FILE* log_;
   std::atomic<LinkFaults*> link_faults_{nullptr};
   double keepalive_s_;
   std::unique_ptr<lcm::LCM> command_lcm_;
   std::unique_ptr<lcm::LCM> response_lcm_;
   std::unique_ptr<lcm::LCM> odometry_lcm_;
-  UserGaitStore user_gaits_;
   // loop thread
   ResponseSchedule schedule_;
   // loop thread -> interface thread

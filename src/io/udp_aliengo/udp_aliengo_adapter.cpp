@@ -49,10 +49,10 @@ int open_socket(const AlienGoUdpConfig& config, int& bound_port) {
 
 }  // namespace
 
-UdpAliengoAdapter::UdpAliengoAdapter(HighLevelMachine& machine, AlienGoSource& source, const AlienGoUdpConfig& config,
+UdpAliengoAdapter::UdpAliengoAdapter(ClientPort port, AlienGoInbox& inbox, const AlienGoUdpConfig& config,
                                      std::FILE* log)
-    : machine_(machine),
-      source_(source),
+    : client_(port),
+      inbox_(inbox),
       log_(log),
       port_(config.port),
       socket_(open_socket(config, port_)),
@@ -113,12 +113,12 @@ void UdpAliengoAdapter::handle_datagram(const std::uint8_t* data, std::size_t si
   }
   counts_.accepted.add();
   // the sport session decides in the tick; a full ring (faster than the tick takes) is counted there
-  source_.push(command);
+  inbox_.push(command);
   answer(sender);
 }
 
 void UdpAliengoAdapter::log_refusals(double now_s) {
-  while (std::optional<AlienGoRefusal> refusal = source_.refusals().try_pop()) {
+  while (std::optional<AlienGoRefusal> refusal = inbox_.next_refusal()) {
     char line[160];
     std::snprintf(line, sizeof line, "HighCmd mode %d refused in mode %d: %s", refusal->mode, refusal->session_mode,
                   refusal->reason);
@@ -126,7 +126,7 @@ void UdpAliengoAdapter::log_refusals(double now_s) {
   }
   // what the MC refused of the commands the session made (another client holds the robot, a
   // transition the MC does not allow, a protection)
-  while (std::optional<RefusalNote> note = machine_.refusals(HighLevelSource::AlienGoUdp).try_pop()) {
+  while (std::optional<RefusalNote> note = client_.next_refusal()) {
     char line[256];
     std::snprintf(line, sizeof line, "the MC refused mode %d gait %d while in mode %d: %s%s%s%s", note->mode,
                   note->gait_id, note->from_mode, note->reason, note->holder != nullptr ? " (" : "",
@@ -185,11 +185,10 @@ void UdpAliengoAdapter::log_once_per_second() {
 
 AlienGoCounters UdpAliengoAdapter::counters() const {
   AlienGoCounters c = counts_;
-  c.illegal_moves = source_.counters().illegal_moves.load();
-  constexpr auto kSource = static_cast<std::size_t>(HighLevelSource::AlienGoUdp);
-  c.refused_not_holder = machine_.counters().refused_not_holder[kSource].load();
-  c.timeouts = machine_.counters().timeouts[kSource].load();
-  c.ring_overflow = source_.counters().ring_overflow.load();
+  c.illegal_moves = inbox_.counters().illegal_moves.load();
+  c.refused_not_holder = client_.counters().refused_not_holder.load();
+  c.timeouts = client_.counters().timeouts.load();
+  c.ring_overflow = inbox_.counters().ring_overflow.load();
   return c;
 }
 

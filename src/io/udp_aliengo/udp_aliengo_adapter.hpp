@@ -21,8 +21,8 @@
 #include "io/common/rate_limited_log.hpp"
 #include "io/udp_aliengo/aliengo_wire.hpp"
 #include "io/udp_aliengo/udp_aliengo_config.hpp"
-#include "modes/aliengo_source.hpp"
-#include "modes/high_level_machine.hpp"
+#include "modes/aliengo_inbox.hpp"
+#include "modes/client_port.hpp"
 
 namespace cerebellum {
 
@@ -46,9 +46,9 @@ struct AlienGoCounters {
 class UdpAliengoAdapter final : public CycleObserver {
  public:
   // binds the socket and starts the thread; throws std::runtime_error naming the address
-  // machine: its per-client counters and the refusals of this client's commands, for the log;
-  // source: where decoded HighCmds go
-  UdpAliengoAdapter(HighLevelMachine& machine, AlienGoSource& source, const AlienGoUdpConfig& config, std::FILE* log);
+  // port: the machine's counters and refusals of this client's commands, for the log; inbox: where
+  // decoded HighCmds go (the sport session takes them in the tick)
+  UdpAliengoAdapter(ClientPort port, AlienGoInbox& inbox, const AlienGoUdpConfig& config, std::FILE* log);
   ~UdpAliengoAdapter() override;
   UdpAliengoAdapter(const UdpAliengoAdapter&) = delete;
   UdpAliengoAdapter& operator=(const UdpAliengoAdapter&) = delete;
@@ -78,8 +78,8 @@ class UdpAliengoAdapter final : public CycleObserver {
   void log_refusals(double now_s);
   void log_once_per_second();
 
-  HighLevelMachine& machine_;
-  AlienGoSource& source_;
+  ClientPort client_;
+  AlienGoInbox& inbox_;
   std::FILE* log_;
   std::atomic<LinkFaults*> link_faults_{nullptr};
   sockaddr_in newest_sender_{};

@@ -1,9 +1,8 @@
-// Configuration of the AlienGo high-level UDP interface (config section `aliengo:`).
+// Configuration of the AlienGo high-level UDP interface (config section `aliengo:`; the sport
+// session's timers of the same section are the MC's: McConfig::aliengo_session).
 #pragma once
 
 #include <string>
-
-#include "modes/aliengo_session.hpp"
 
 namespace cerebellum {
 
@@ -14,7 +13,6 @@ struct AlienGoUdpConfig {
   // this host only by default; 0.0.0.0 (or the robot's 192.168.123.220) serves other machines
   std::string bind_address = "127.0.0.1";
   int port = kAlienGoDefaultPort;
-  AlienGoSessionConfig session;
 };
 
 }  // namespace cerebellum

@@ -174,7 +174,8 @@ TEST(HighLevelClientWithMc, StandsRefusesWhatIsMissingAndLiesDown) {
   config.highlevel.enabled = true;
   std::FILE* log = std::tmpfile();
   Mc mc = make_simulated_mc(config);
-  LcmHighLevelAdapter adapter(mc.machine(), mc.user_gait_slot(), config.highlevel, config.loop_period_s, log);
+  LcmHighLevelAdapter adapter(mc.client_port(HighLevelSource::CyberDog2Lcm), mc.user_gait_upload(), config.highlevel,
+                              config.loop_period_s, log);
   mc.loop().add_observer(adapter);
   std::atomic<bool> stop{false};
   std::thread loop([&] { mc.loop().run({30.0, 1.0}, stop); });

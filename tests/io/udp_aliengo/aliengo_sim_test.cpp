@@ -106,9 +106,7 @@ TEST(AlienGoArbitration, AnLcmClientWalkingHoldsTheRobotUntilSilentThenTheUdpCli
   EXPECT_EQ(sim.mc.machine().holder(), HighLevelSource::CyberDog2Lcm);
   EXPECT_GT(sim.true_xy().x() - x0, 0.5) << "the holder's walk runs";
   EXPECT_LT(std::abs(sim.true_xy().y() - y0), 0.1) << "the other client's walk does not";
-  EXPECT_GT(
-      sim.mc.machine().counters().refused_not_holder[static_cast<std::size_t>(HighLevelSource::AlienGoUdp)].load(),
-      1000u);
+  EXPECT_GT(sim.mc.machine().counters(HighLevelSource::AlienGoUdp).refused_not_holder.load(), 1000u);
   // the LCM client goes silent: damped after its timeout, then the UDP client holds the robot,
   // which stands up (sport mode starts standing) and walks sideways
   sim.stream(udp_walk, 0.6);

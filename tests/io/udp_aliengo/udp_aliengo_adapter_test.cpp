@@ -67,7 +67,9 @@ std::vector<std::uint8_t> high_cmd_bytes(int mode) {
 }
 
 struct Endpoint {
-  Endpoint() : mc(make_simulated_mc(default_config())), adapter(mc.machine(), mc.aliengo_source(), config(), stderr) {
+  Endpoint()
+      : mc(make_simulated_mc(default_config())),
+        adapter(mc.client_port(HighLevelSource::AlienGoUdp), mc.aliengo_source().inbox(), config(), stderr) {
     mc.loop().add_observer(adapter);
     run(3.0);  // the MC stands up by itself
   }
