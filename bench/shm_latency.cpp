@@ -23,7 +23,7 @@
 
 #include "loop/mc.hpp"
 #include "loop/simulated_robot.hpp"
-#include "io/shm_lowlevel/shm_lowlevel_source.hpp"
+#include "io/shm_lowlevel/shm_lowlevel_port.hpp"
 #include "lowlevel/lowlevel_sync.h"
 #include "timed_benchmark_main.hpp"
 
@@ -67,13 +67,13 @@ void shm_command_to_state_latency(benchmark::State& state, double seconds) {
     config.shm.enabled = true;
     config.shm.name_prefix = "cbbench" + std::to_string(::getpid()) + "_";
     Mc mc = make_simulated_mc(config);
-    // declared before the source: its log thread writes until the source is gone
+    // declared before the port: its log thread writes until the port is gone
     const std::unique_ptr<std::FILE, int (*)(std::FILE*)> log(std::fopen("/dev/null", "w"), &std::fclose);
-    ShmLowLevelSource source(config.shm, config.safety, log.get());
-    mc.arbiter().add_low_level_source(source);
-    mc.loop().add_substep_participant(source);
-    spline_data_p shm = create_spline_shm_named(source.spline_object_name().c_str());
-    nav_imu_p imu = create_imu_shm_named(source.imu_object_name().c_str());
+    ShmLowLevelPort port(config.shm, config.safety, log.get());
+    mc.arbiter().add_low_level_source(port.source());
+    mc.loop().add_substep_participant(port);
+    spline_data_p shm = create_spline_shm_named(port.spline_object_name().c_str());
+    nav_imu_p imu = create_imu_shm_named(port.imu_object_name().c_str());
 
     std::atomic<bool> stop{false};
     RunStats stats;
@@ -114,7 +114,7 @@ void shm_command_to_state_latency(benchmark::State& state, double seconds) {
     mc_thread.join();
 
     std::sort(latencies_us.begin(), latencies_us.end());
-    const ShmLowLevelCounters counters = source.counters();
+    const ShmLowLevelCounters counters = port.source().counters();
     state.counters["p50_us"] = percentile(latencies_us, 0.50);
     state.counters["p99_us"] = percentile(latencies_us, 0.99);
     state.counters["max_us"] = latencies_us.empty() ? 0.0 : latencies_us.back();

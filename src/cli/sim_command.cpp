@@ -20,7 +20,7 @@
 #include "io/lcm_sim_control/sim_control_adapter.hpp"
 #include "io/udp_aliengo/udp_aliengo_adapter.hpp"
 #include "io/lcm_sim_truth/sim_truth_publisher.hpp"
-#include "io/shm_lowlevel/shm_lowlevel_source.hpp"
+#include "io/shm_lowlevel/shm_lowlevel_port.hpp"
 
 namespace cerebellum {
 
@@ -52,10 +52,10 @@ int run_sim_command(const std::vector<std::string>& args) {
     // the client links' faults (`cerebellum fault link ...`): before the adapters that use them
     LinkFaultSet link_faults;
     const bool link_faults_served = config.sim_command.enabled;
-    std::optional<ShmLowLevelSource> shm;
+    std::optional<ShmLowLevelPort> shm;
     if (config.shm.enabled) {
       shm.emplace(config.shm, config.safety, stderr);  // events go where every interface logs
-      mc.arbiter().add_low_level_source(*shm);
+      mc.arbiter().add_low_level_source(shm->source());
       loop.add_substep_participant(*shm);
     }
     std::optional<LcmMotorSdkAdapter> motor_sdk;

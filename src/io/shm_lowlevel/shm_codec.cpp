@@ -72,24 +72,20 @@ void encode_shm_imu(const SensorFrame& frame, nav_imu_t& imu) {
   for (std::size_t k = 0; k < 4; ++k) imu.q[k] = static_cast<float>(frame.imu_quat[k]);
 }
 
-ShmCommandCheck decode_shm_command(const leg_control_t (&legs)[kNumLegs], const CommandLimits& limits,
-                                   JointCommand& command) {
-  // check the whole frame before touching the command
-  JointCommand decoded;
+JointCommand decode_shm_command(const leg_control_t (&legs)[kNumLegs]) {
+  JointCommand command;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     for (std::size_t joint = 0; joint < kJointsPerLeg; ++joint) {
       const std::size_t i = joint_index(leg, joint);
       const joint_control_t& in = joint_in(legs[leg], joint);
-      decoded.q_des[i] = in.p_des;
-      decoded.qd_des[i] = in.v_des;
-      decoded.kp[i] = in.kp;
-      decoded.kd[i] = in.kd;
-      decoded.tau_ff[i] = in.t_ff;
+      command.q_des[i] = in.p_des;
+      command.qd_des[i] = in.v_des;
+      command.kp[i] = in.kp;
+      command.kd[i] = in.kd;
+      command.tau_ff[i] = in.t_ff;
     }
   }
-  const ShmCommandCheck check = check_shm_command(decoded, limits);
-  if (check.ok()) command = decoded;
-  return check;
+  return command;
 }
 
 }  // namespace cerebellum

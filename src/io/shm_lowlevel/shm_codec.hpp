@@ -7,8 +7,6 @@
 
 #include "core/types.hpp"
 #include "lowlevel/lowlevel.h"
-#include "lowlevel/shm/shm_command_rules.hpp"
-#include "safety/command_limits.hpp"
 
 namespace cerebellum {
 
@@ -26,9 +24,9 @@ void encode_shm_legs(const SensorFrame& frame, leg_state_t (&legs)[kNumLegs]);
 void encode_shm_imu(const SensorFrame& frame, nav_imu_t& imu);
 std::uint64_t shm_timestamp_ns(double time_s);
 
-// cmd.legs -> command (the foot entries and leg flags are not read). Rejects the frame when it
-// breaks the command rules (lowlevel/shm/shm_command_rules.hpp); command is then left untouched.
-ShmCommandCheck decode_shm_command(const leg_control_t (&legs)[kNumLegs], const CommandLimits& limits,
-                                   JointCommand& command);
+// cmd.legs -> command, every value as the client wrote it (the foot entries and leg flags are
+// not read): whether the motors may run it is the source's decision
+// (lowlevel/shm/shm_command_rules.hpp), not the translation's
+JointCommand decode_shm_command(const leg_control_t (&legs)[kNumLegs]);
 
 }  // namespace cerebellum

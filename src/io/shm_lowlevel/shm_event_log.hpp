@@ -1,5 +1,6 @@
-// What the shared-memory source has to say (rejected frames, take-over, refusal, timeouts),
-// printed by its own thread: the loop thread only copies an event into a ring.
+// What the shared-memory source has to say (rejected frames, take-over, refusal, timeouts;
+// lowlevel/shm/shm_event.hpp), printed by its own thread: the loop thread only copies an event
+// into a ring.
 #pragma once
 
 #include <atomic>
@@ -9,20 +10,9 @@
 
 #include "core/spsc_ring.hpp"
 #include "io/common/rate_limited_log.hpp"
-#include "io/shm_lowlevel/shm_codec.hpp"
+#include "lowlevel/shm/shm_event.hpp"
 
 namespace cerebellum {
-
-enum class ShmEventKind { FrameRejected, Latched, Refused, CommandTimedOut, CommandResumed };
-
-struct ShmEvent {
-  ShmEventKind kind = ShmEventKind::FrameRejected;
-  double time_s = 0.0;           // robot time
-  ShmCommandCheck check;         // FrameRejected
-  const char* holder = nullptr;  // Refused: who has the robot (a string literal of the arbiter or a source)
-  int missed_cycles = 0;         // CommandTimedOut
-  double damping_kd = 0.0;       // CommandTimedOut
-};
 
 class ShmEventLog {
  public:

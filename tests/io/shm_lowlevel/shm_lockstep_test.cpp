@@ -11,7 +11,7 @@
 
 #include "loop/mc.hpp"
 #include "loop/simulated_robot.hpp"
-#include "io/shm_lowlevel/shm_lowlevel_source.hpp"
+#include "io/shm_lowlevel/shm_lowlevel_port.hpp"
 #include "io/shm_lowlevel/shm_test_client.hpp"
 #include "io/shm_lowlevel/shm_test_names.hpp"
 
@@ -62,20 +62,21 @@ class ShmLockstep : public ::testing::Test {
     mc_ = std::make_unique<Mc>(config_, make_simulated_robot(config_.robot));
     log_ = std::tmpfile();
     ASSERT_NE(log_, nullptr);
-    source_ = std::make_unique<ShmLowLevelSource>(config_.shm, config_.safety, log_);
+    port_ = std::make_unique<ShmLowLevelPort>(config_.shm, config_.safety, log_);
     if (first_source != nullptr) mc_->arbiter().add_low_level_source(*first_source);
-    mc_->arbiter().add_low_level_source(*source_);
-    mc_->loop().add_substep_participant(*source_);
-    client_ = std::make_unique<ShmTestClient>(source_->spline_object_name(), source_->imu_object_name());
+    mc_->arbiter().add_low_level_source(port_->source());
+    mc_->loop().add_substep_participant(*port_);
+    client_ = std::make_unique<ShmTestClient>(port_->spline_object_name(), port_->imu_object_name());
   }
 
   void TearDown() override {
     client_.reset();
-    source_.reset();
+    port_.reset();
     if (log_ != nullptr) std::fclose(log_);
   }
 
   void tick() { mc_->loop().tick(); }
+  const ShmLowLevelSource& source() const { return port_->source(); }
   double height_m() const { return mc_->simulation().ground_truth().position[2]; }
   double robot_time_s() const { return mc_->backend().time_s(); }
 
@@ -92,7 +93,7 @@ class ShmLockstep : public ::testing::Test {
   }
 
   std::string log_text() {
-    source_->flush_log();
+    port_->flush_log();
     std::fflush(log_);
     std::rewind(log_);
     std::string text;
@@ -110,17 +111,17 @@ class ShmLockstep : public ::testing::Test {
   McConfig config_;
   std::unique_ptr<Mc> mc_;
   std::FILE* log_ = nullptr;
-  std::unique_ptr<ShmLowLevelSource> source_;
+  std::unique_ptr<ShmLowLevelPort> port_;
   std::unique_ptr<ShmTestClient> client_;
 };
 
 TEST_F(ShmLockstep, ClientStandsTheRobot) {
   build(Startup::Damper);
   stand_up(3.5);
-  EXPECT_TRUE(source_->latched());
-  EXPECT_EQ(mc_->arbiter().latched(), source_.get());
+  EXPECT_TRUE(source().latched());
+  EXPECT_EQ(mc_->arbiter().latched(), &port_->source());
   EXPECT_GE(height_m(), 0.2);
-  const ShmLowLevelCounters c = source_->counters();
+  const ShmLowLevelCounters c = source().counters();
   EXPECT_EQ(c.frames_taken, 3500u);
   EXPECT_EQ(c.frames_rejected, 0u);
   EXPECT_EQ(c.missed_cycles, 0u);
@@ -144,22 +145,22 @@ TEST_F(ShmLockstep, SilenceClearsTheCommandAfterTenCycles) {
   // nine missed cycles: the last frame repeats
   for (int missed = 1; missed <= 9; ++missed) {
     tick();
-    ASSERT_TRUE(source_->command_active()) << missed;
-    EXPECT_EQ(source_->active_command().kp[4], 60.0) << missed;
+    ASSERT_TRUE(source().command_active()) << missed;
+    EXPECT_EQ(source().active_command().kp[4], 60.0) << missed;
   }
   // the tenth: damping, 10 ms of robot time after the last frame
   tick();
-  EXPECT_FALSE(source_->command_active());
+  EXPECT_FALSE(source().command_active());
   EXPECT_NEAR(robot_time_s() - 0.001 - last_frame_s, 0.010, 1e-9);
-  const JointCommand& damped = source_->active_command();
+  const JointCommand& damped = source().active_command();
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     EXPECT_EQ(damped.kp[i], 0.0);
     EXPECT_EQ(damped.kd[i], config_.safety.damping_kd);
     EXPECT_EQ(damped.tau_ff[i], 0.0);
     EXPECT_EQ(damped.qd_des[i], 0.0);
   }
-  EXPECT_EQ(source_->counters().command_timeouts, 1u);
-  EXPECT_EQ(source_->counters().missed_cycles, 10u);
+  EXPECT_EQ(source().counters().command_timeouts, 1u);
+  EXPECT_EQ(source().counters().missed_cycles, 10u);
   EXPECT_EQ(count(log_text(), "no command frame for 10 cycles: command cleared, motors damped (kp 0, kd 4.00, tau 0)"),
             1);
   // the damped robot sinks
@@ -170,8 +171,8 @@ TEST_F(ShmLockstep, SilenceClearsTheCommandAfterTenCycles) {
   ASSERT_TRUE(client_->read_state(q));
   ASSERT_TRUE(client_->send(q, 60.0f, 2.0f));
   tick();
-  EXPECT_TRUE(source_->command_active());
-  EXPECT_EQ(source_->active_command().kp[0], 60.0);
+  EXPECT_TRUE(source().command_active());
+  EXPECT_EQ(source().active_command().kp[0], 60.0);
   EXPECT_EQ(count(log_text(), "command frames resumed"), 1);
 }
 
@@ -231,21 +232,21 @@ TEST_F(ShmLockstep, StateFlagsAndContentFollowTheHandshake) {
   EXPECT_EQ(client_->shm()->cmd.legs[0].abad.kp, 60.0f);
   tick();
   EXPECT_EQ(client_->command_flag(), 0u);
-  EXPECT_EQ(source_->counters().frames_taken, 1u);
+  EXPECT_EQ(source().counters().frames_taken, 1u);
   // without a new flag nothing is taken: the frame repeats
   tick();
-  EXPECT_EQ(source_->counters().frames_taken, 1u);
-  EXPECT_EQ(source_->counters().missed_cycles, 1u);
-  EXPECT_TRUE(source_->latched());
-  EXPECT_EQ(source_->active_command().kp[0], 60.0);
+  EXPECT_EQ(source().counters().frames_taken, 1u);
+  EXPECT_EQ(source().counters().missed_cycles, 1u);
+  EXPECT_TRUE(source().latched());
+  EXPECT_EQ(source().active_command().kp[0], 60.0);
 }
 
 TEST_F(ShmLockstep, NonFiniteOrAbsurdFramesAreRejectedAndLogged) {
   build(Startup::Damper);
   stand_up(1.0);
-  const JointCommand good = source_->active_command();
+  const JointCommand good = source().active_command();
   const auto expect_unchanged = [&] {
-    const JointCommand& now = source_->active_command();
+    const JointCommand& now = source().active_command();
     for (std::size_t i = 0; i < kNumJoints; ++i) {
       EXPECT_EQ(now.q_des[i], good.q_des[i]) << i;
       EXPECT_EQ(now.kp[i], good.kp[i]) << i;
@@ -260,7 +261,7 @@ TEST_F(ShmLockstep, NonFiniteOrAbsurdFramesAreRejectedAndLogged) {
   frame[FRONT_LEFT].hip.p_des = std::numeric_limits<float>::quiet_NaN();
   ASSERT_TRUE(client_->send_raw(frame));
   tick();
-  EXPECT_EQ(source_->counters().frames_rejected, 1u);
+  EXPECT_EQ(source().counters().frames_rejected, 1u);
   EXPECT_EQ(client_->command_flag(), 0u) << "a rejected frame is still taken off the flag";
   expect_unchanged();
 
@@ -274,9 +275,9 @@ TEST_F(ShmLockstep, NonFiniteOrAbsurdFramesAreRejectedAndLogged) {
   ShmTestClient::position_frame(q, 60.0f, -2.0f, frame);
   ASSERT_TRUE(client_->send_raw(frame));
   tick();
-  EXPECT_EQ(source_->counters().frames_rejected, 4u);
+  EXPECT_EQ(source().counters().frames_rejected, 4u);
   expect_unchanged();
-  EXPECT_TRUE(source_->command_active());
+  EXPECT_TRUE(source().command_active());
 
   const std::string log = log_text();
   EXPECT_EQ(count(log, "FL hip p_des = nan (not finite)"), 1) << log;
@@ -289,7 +290,7 @@ TEST_F(ShmLockstep, NonFiniteOrAbsurdFramesAreRejectedAndLogged) {
   frame[FRONT_RIGHT].foot.kp = std::numeric_limits<float>::quiet_NaN();
   ASSERT_TRUE(client_->send_raw(frame));
   tick();
-  EXPECT_EQ(source_->counters().frames_rejected, 4u);
+  EXPECT_EQ(source().counters().frames_rejected, 4u);
 
   // rejected frames count as missing ones: only bad frames for 10 cycles drop the command
   frame[FRONT_RIGHT].abad.kd = std::numeric_limits<float>::quiet_NaN();
@@ -297,8 +298,8 @@ TEST_F(ShmLockstep, NonFiniteOrAbsurdFramesAreRejectedAndLogged) {
     ASSERT_TRUE(client_->send_raw(frame));
     tick();
   }
-  EXPECT_FALSE(source_->command_active());
-  EXPECT_EQ(source_->active_command().kp[0], 0.0);
+  EXPECT_FALSE(source().command_active());
+  EXPECT_EQ(source().active_command().kp[0], 0.0);
 }
 
 TEST_F(ShmLockstep, RefusedWhileAnotherSourceHoldsTheRobot) {
@@ -308,10 +309,10 @@ TEST_F(ShmLockstep, RefusedWhileAnotherSourceHoldsTheRobot) {
   tick();
   ASSERT_TRUE(greedy.latched);
   stand_up(1.5);
-  EXPECT_FALSE(source_->latched());
+  EXPECT_FALSE(source().latched());
   EXPECT_EQ(mc_->arbiter().latched(), &greedy);
   // one refusal per tick while the client keeps sending, one log line for the whole stretch
-  EXPECT_GE(source_->counters().refusals, 1499u);
+  EXPECT_GE(source().counters().refusals, 1499u);
   EXPECT_EQ(count(log_text(), "command frames ignored: the greedy test source has the robot"), 1);
   EXPECT_LT(height_m(), 0.15) << "the frames must not have moved the robot";
   // the state is still published for the client to read
@@ -328,20 +329,20 @@ TEST_F(ShmLockstep, RefusedWhileTheMcStandsByItself) {
     ASSERT_TRUE(client_->send(zero, 0.0f, 0.0f));
     tick();
   }
-  EXPECT_FALSE(source_->latched());
+  EXPECT_FALSE(source().latched());
   EXPECT_EQ(mc_->arbiter().latched(), nullptr);
   EXPECT_GE(height_m(), 0.2);
   EXPECT_EQ(count(log_text(), "command frames ignored: the MC (not in Off or PureDamper) has the robot"), 1);
 }
 
-TEST_F(ShmLockstep, ObjectsAreRemovedWithTheSource) {
+TEST_F(ShmLockstep, ObjectsAreRemovedWithThePort) {
   build(Startup::Damper);
-  const std::string spline = source_->spline_object_name();
-  const std::string imu = source_->imu_object_name();
+  const std::string spline = port_->spline_object_name();
+  const std::string imu = port_->imu_object_name();
   EXPECT_TRUE(shm_object_exists(spline));
   EXPECT_TRUE(shm_object_exists(imu));
   client_.reset();
-  source_.reset();
+  port_.reset();
   EXPECT_FALSE(shm_object_exists(spline));
   EXPECT_FALSE(shm_object_exists(imu));
 }

@@ -8,7 +8,7 @@
 #include <cstdio>
 #include <thread>
 
-#include "io/shm_lowlevel/shm_lowlevel_source.hpp"
+#include "io/shm_lowlevel/shm_lowlevel_port.hpp"
 #include "io/shm_lowlevel/shm_test_client.hpp"
 #include "io/shm_lowlevel/shm_test_names.hpp"
 
@@ -54,13 +54,13 @@ TEST(ShmTornFrame, ReaderAcceptsOnlyWholeFrames) {
   std::FILE* log = std::tmpfile();
   ASSERT_NE(log, nullptr);
   {
-    ShmLowLevelSource source(config, GuardLimits{}, log);
-    ShmTestClient client(source.spline_object_name(), source.imu_object_name());
+    ShmLowLevelPort port(config, GuardLimits{}, log);
+    ShmTestClient client(port.spline_object_name(), port.imu_object_name());
     constexpr int kFrames = 200000;
     std::atomic<bool> writing{true};
     std::thread writer([&] {
       JointCommand command;
-      for (int k = 1; k <= kFrames; ++k) source.on_substep(uniform_frame(k), command);
+      for (int k = 1; k <= kFrames; ++k) port.on_substep(uniform_frame(k), command);
       writing.store(false);
     });
 
@@ -88,7 +88,7 @@ TEST(ShmTornFrame, ReaderAcceptsOnlyWholeFrames) {
     // a frame published while nobody writes reads whole at once (a read racing a publish may
     // have cleared the flag of the last frame above: the vendor handshake can skip a frame)
     JointCommand command;
-    source.on_substep(uniform_frame(kFrames + 1), command);
+    port.on_substep(uniform_frame(kFrames + 1), command);
     EXPECT_TRUE(read_one());
     EXPECT_EQ(torn, 0) << "of " << accepted << " accepted frames";
     EXPECT_EQ(out_of_order, 0);
