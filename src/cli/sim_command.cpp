@@ -67,13 +67,14 @@ int run_sim_command(const std::vector<std::string>& args) {
     }
     std::optional<LcmHighLevelAdapter> highlevel;
     if (config.highlevel.enabled) {
-      highlevel.emplace(mc.machine(), mc.user_gait_slot(), config.highlevel, config.loop_period_s, stderr);
+      highlevel.emplace(mc.client_port(HighLevelSource::CyberDog2Lcm), mc.user_gait_upload(), config.highlevel,
+                        config.loop_period_s, stderr);
       if (link_faults_served) highlevel->attach_link_faults(link_faults.highlevel);
       loop.add_observer(*highlevel);
     }
     std::optional<UdpAliengoAdapter> aliengo;
     if (config.aliengo.enabled) {
-      aliengo.emplace(mc.machine(), mc.aliengo_source(), config.aliengo, stderr);
+      aliengo.emplace(mc.client_port(HighLevelSource::AlienGoUdp), mc.aliengo_source().inbox(), config.aliengo, stderr);
       if (link_faults_served) aliengo->attach_link_faults(link_faults.aliengo);
       loop.add_observer(*aliengo);
     }
