@@ -36,7 +36,7 @@ struct RobotData {
   float tau[12];              // joint torques, N m
   float quat[4];              // trunk orientation (w, x, y, z)
   float rpy[3];               // roll, pitch, yaw, rad
-  float acc[3];               // trunk acceleration, world frame, m/s^2
+  float acc[3];               // IMU specific force (gravity included: +9.81 on z at rest), world frame, m/s^2
   float omega[3];             // trunk angular velocity, world frame, rad/s
   float ctrl_topic_interval;  // ms between the MC's last two received commands
   uint32_t motor_flags[12];   // per motor: mode bits 30..31, error and warning bits below

@@ -6,6 +6,7 @@
 #include <array>
 
 #include "core/ground_plane.hpp"
+#include "core/specific_force.hpp"
 #include "core/types.hpp"
 
 namespace cerebellum {
@@ -24,7 +25,13 @@ struct RobotState {
   Eigen::Vector3d rpy = Eigen::Vector3d::Zero();                    // roll, pitch, yaw (ZYX)
   Eigen::Vector3d omega_body = Eigen::Vector3d::Zero();
   Eigen::Vector3d omega_world = Eigen::Vector3d::Zero();
-  Eigen::Vector3d accel_body = Eigen::Vector3d::Zero();  // specific force minus gravity
+  // the IMU's accelerometer as it reads: the specific force (acceleration minus gravity's), body
+  // frame, m/s^2: about (0, 0, +9.81) standing level, zero in free fall (core/specific_force.hpp);
+  // until the first frame, at rest in the default (level) orientation
+  Eigen::Vector3d specific_force_body = specific_force_at_rest_world();
+  // the IMU's acceleration, world frame, gravity's part taken out (acceleration_from_specific_force):
+  // about zero at rest, -9.81 on z in free fall; what the filter, the safety checks and the
+  // controllers use
   Eigen::Vector3d accel_world = Eigen::Vector3d::Zero();
   Eigen::Vector3d position_world = Eigen::Vector3d::Zero();
   Eigen::Vector3d velocity_world = Eigen::Vector3d::Zero();

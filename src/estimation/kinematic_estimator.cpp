@@ -5,6 +5,7 @@
 #include "core/leg_kinematics.hpp"
 #include "core/orientation.hpp"
 #include "core/robot_model.hpp"
+#include "core/specific_force.hpp"
 
 namespace cerebellum {
 namespace {
@@ -54,10 +55,9 @@ void KinematicEstimator::update(const SensorFrame& frame, const ContactPlan& /*p
   const Eigen::Matrix3d body_to_world = orientation.toRotationMatrix();
   state.omega_body = Eigen::Vector3d(frame.imu_gyro[0], frame.imu_gyro[1], frame.imu_gyro[2]);
   state.omega_world = body_to_world * state.omega_body;
-  const Eigen::Vector3d gravity(0.0, 0.0, -robot::kGravityMPerS2);
-  const Eigen::Vector3d specific_force(frame.imu_accel[0], frame.imu_accel[1], frame.imu_accel[2]);
-  state.accel_world = body_to_world * specific_force + gravity;
-  state.accel_body = body_to_world.transpose() * state.accel_world;
+  // the accelerometer as it reads (what the interfaces publish), and the acceleration it means
+  state.specific_force_body = Eigen::Vector3d(frame.imu_accel[0], frame.imu_accel[1], frame.imu_accel[2]);
+  state.accel_world = acceleration_from_specific_force(body_to_world * state.specific_force_body);
 
   // feet, contact from the foot force J^-T tau, height from the feet in contact
   double height_sum = 0.0;

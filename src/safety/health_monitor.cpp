@@ -8,9 +8,10 @@ HealthMonitor::HealthMonitor(const HealthLimits& limits) : limits_(limits) {}
 
 bool HealthMonitor::imu_stuck(const RobotState& state) {
   // everything the estimator takes from the IMU; a live sensor never repeats it bit for bit
-  const std::array<double, 10> sample{
-      state.orientation.w(), state.orientation.x(), state.orientation.y(), state.orientation.z(), state.omega_body.x(),
-      state.omega_body.y(),  state.omega_body.z(),  state.accel_body.x(),  state.accel_body.y(),  state.accel_body.z()};
+  const Eigen::Quaterniond& q = state.orientation;
+  const Eigen::Vector3d& w = state.omega_body;
+  const Eigen::Vector3d& f = state.specific_force_body;  // the accelerometer as it reads
+  const std::array<double, 10> sample{q.w(), q.x(), q.y(), q.z(), w.x(), w.y(), w.z(), f.x(), f.y(), f.z()};
   if (!have_sample_ || sample != imu_sample_) {
     have_sample_ = true;
     imu_sample_ = sample;

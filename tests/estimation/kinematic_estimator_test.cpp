@@ -15,7 +15,7 @@ namespace {
 SensorFrame standing_frame() {
   SensorFrame frame;
   frame.q = robot::whole_body_pose(robot::kStandPose);
-  frame.imu_accel = {0.0, 0.0, 9.81};
+  frame.imu_accel = {0.0, 0.0, robot::kGravityMPerS2};
   return frame;
 }
 
@@ -43,14 +43,30 @@ TEST(KinematicEstimator, RollPitchYawFromTheImuQuaternion) {
   EXPECT_NEAR(state.rpy.z(), 0.3, 1e-12);
 }
 
-TEST(KinematicEstimator, GravityIsRemovedFromTheAccelerometer) {
+TEST(KinematicEstimator, GravityIsRemovedFromTheAccelerometerForTheAccelerationAndKeptInTheSpecificForce) {
   SensorFrame frame = standing_frame();
-  frame.imu_accel = {1.0, 0.0, 9.81};
+  frame.imu_accel = {1.0, 0.0, robot::kGravityMPerS2};
   KinematicEstimator estimator;
   RobotState state;
   estimator.update(frame, std::nullopt, state);
   EXPECT_NEAR(state.accel_world.x(), 1.0, 1e-12);
   EXPECT_NEAR(state.accel_world.z(), 0.0, 1e-12);
+  // what the interfaces publish: the accelerometer as it reads
+  EXPECT_EQ(state.specific_force_body, Eigen::Vector3d(1.0, 0.0, robot::kGravityMPerS2));
+}
+
+TEST(KinematicEstimator, OnATiltTheAccelerationTurnsTheSpecificForceIntoTheWorldBeforeGravityIsRemoved) {
+  // at rest rolled 0.4 rad: the accelerometer reads gravity's reaction in the tilted body frame
+  SensorFrame frame = standing_frame();
+  const Eigen::Quaterniond roll(Eigen::AngleAxisd(0.4, Eigen::Vector3d::UnitX()));
+  frame.imu_quat = {roll.w(), roll.x(), roll.y(), roll.z()};
+  const Eigen::Vector3d reading = roll.conjugate() * Eigen::Vector3d(0.0, 0.0, robot::kGravityMPerS2);
+  frame.imu_accel = {reading.x(), reading.y(), reading.z()};
+  KinematicEstimator estimator;
+  RobotState state;
+  estimator.update(frame, std::nullopt, state);
+  EXPECT_LT(state.accel_world.norm(), 1e-12);
+  EXPECT_LT((state.specific_force_body - reading).norm(), 1e-12);
 }
 
 TEST(KinematicEstimator, ContactsFromFootForceAndHeightFromStanceFeet) {

@@ -15,7 +15,7 @@ RobotState live_state(int tick) {
   state.valid = true;
   state.time_s = tick * kTickS;
   state.omega_body.x() = 1e-4 * (tick % 7);
-  state.accel_body.z() = 1e-3 * (tick % 5);
+  state.specific_force_body.z() += 1e-3 * (tick % 5);
   state.q.fill(0.01 * tick);
   return state;
 }

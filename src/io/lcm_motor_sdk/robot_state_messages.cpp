@@ -29,8 +29,10 @@ state_estimator_lcmt make_state_estimator(const RobotState& state) {
   message.quat[1] = static_cast<float>(state.orientation.x());
   message.quat[2] = static_cast<float>(state.orientation.y());
   message.quat[3] = static_cast<float>(state.orientation.z());
-  put_vector3(message.aBody, state.accel_body);
-  put_vector3(message.aWorld, state.accel_world);
+  // the IMU's specific force as the vendor's estimator publishes it: aBody the accelerometer
+  // (body frame), aWorld the same turned into the world; +9.81 on z at rest, gravity included
+  put_vector3(message.aBody, state.specific_force_body);
+  put_vector3(message.aWorld, state.orientation * state.specific_force_body);
   for (std::size_t leg = 0; leg < kNumLegs; ++leg)
     message.contactEstimate[leg] = static_cast<float>(state.contact[leg]);
   message.timestamp = static_cast<std::int64_t>(std::llround(state.time_s * 1e9));

@@ -12,7 +12,9 @@
 namespace cerebellum {
 
 // p, vWorld, vBody (and their _abs copies: the estimate is the only one), rpy, omegaBody,
-// omegaWorld, quat (w, x, y, z), aBody, aWorld, contactEstimate; timestamp in ns of robot time
+// omegaWorld, quat (w, x, y, z), aBody, aWorld (the IMU's specific force, gravity included: body
+// frame and turned into the world; the motor SDK's RobotData.acc is aWorld), contactEstimate;
+// timestamp in ns of robot time
 state_estimator_lcmt make_state_estimator(const RobotState& state);
 
 // q, qd, tau_est in wire convention; p, v = foot position and velocity in the hip frame;

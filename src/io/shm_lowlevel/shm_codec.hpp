@@ -20,7 +20,8 @@ std::int32_t shm_joint_state_flags(double temperature_c, std::uint32_t motor_fau
 
 // state.legs of one frame
 void encode_shm_legs(const SensorFrame& frame, leg_state_t (&legs)[kNumLegs]);
-// the IMU of one frame; timestamp: robot time in ns
+// the IMU of one frame: acc the accelerometer as it reads (specific force, gravity included: +9.81
+// on z at rest), body frame; timestamp: robot time in ns
 void encode_shm_imu(const SensorFrame& frame, nav_imu_t& imu);
 std::uint64_t shm_timestamp_ns(double time_s);
 

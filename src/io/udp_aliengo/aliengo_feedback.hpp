@@ -15,7 +15,7 @@ struct AlienGoFeedback {
   int mode = 0;
   Eigen::Vector4d quaternion_wxyz{1, 0, 0, 0};
   Eigen::Vector3d gyroscope = Eigen::Vector3d::Zero();      // body, rad/s
-  Eigen::Vector3d accelerometer = Eigen::Vector3d::Zero();  // body, specific force, m/s^2
+  Eigen::Vector3d accelerometer = Eigen::Vector3d::Zero();  // body, specific force (gravity included), m/s^2
   Eigen::Vector3d rpy = Eigen::Vector3d::Zero();
   int temperature_c = 0;
   Eigen::Vector3d position = Eigen::Vector3d::Zero();  // odometry, world

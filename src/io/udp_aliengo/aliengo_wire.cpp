@@ -6,7 +6,6 @@
 #include <cstring>
 
 #include "core/leg_kinematics.hpp"
-#include "core/robot_model.hpp"
 #include "unitree_legged_sdk/comm.h"
 
 namespace cerebellum {
@@ -96,9 +95,8 @@ AlienGoFeedback make_feedback(const RobotState& state, int mode) {
   f.mode = mode;
   f.quaternion_wxyz = {state.orientation.w(), state.orientation.x(), state.orientation.y(), state.orientation.z()};
   f.gyroscope = state.omega_body;
-  // an accelerometer measures the specific force: acceleration minus gravity, in the body frame
-  const Eigen::Matrix3d world_to_body = state.orientation.toRotationMatrix().transpose();
-  f.accelerometer = world_to_body * (state.accel_world + Eigen::Vector3d(0.0, 0.0, robot::kGravityMPerS2));
+  // the accelerometer as it reads: the specific force (gravity included), body frame
+  f.accelerometer = state.specific_force_body;
   f.rpy = state.rpy;
   // the simulated IMU has no thermal model: the coolest motor, the body's inside temperature
   f.temperature_c =

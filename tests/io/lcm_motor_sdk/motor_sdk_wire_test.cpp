@@ -126,7 +126,7 @@ TEST(MotorSdkWire, StateEstimatorQuaternionIsWxyz) {
   state.orientation = Eigen::Quaterniond(Eigen::AngleAxisd(0.3, Eigen::Vector3d::UnitZ()));
   state.rpy = Eigen::Vector3d(0.0, 0.0, 0.3);
   state.position_world = Eigen::Vector3d(1.0, 2.0, 0.25);
-  state.accel_world = Eigen::Vector3d(0.1, 0.2, 0.3);
+  state.specific_force_body = Eigen::Vector3d(0.1, 0.2, 9.3);
   state.contact = {1.0, 0.0, 1.0, 0.0};
   const state_estimator_lcmt message = make_state_estimator(state);
   EXPECT_FLOAT_EQ(message.quat[0], float(std::cos(0.15)));
@@ -134,7 +134,11 @@ TEST(MotorSdkWire, StateEstimatorQuaternionIsWxyz) {
   EXPECT_FLOAT_EQ(message.quat[3], float(std::sin(0.15)));
   EXPECT_FLOAT_EQ(message.rpy[2], 0.3f);
   EXPECT_FLOAT_EQ(message.p[2], 0.25f);
-  EXPECT_FLOAT_EQ(message.aWorld[1], 0.2f);
+  // the accelerometer as it reads, and the same turned into the world (gravity included in both)
+  EXPECT_FLOAT_EQ(message.aBody[1], 0.2f);
+  EXPECT_FLOAT_EQ(message.aWorld[0], float(0.1 * std::cos(0.3) - 0.2 * std::sin(0.3)));
+  EXPECT_FLOAT_EQ(message.aWorld[1], float(0.1 * std::sin(0.3) + 0.2 * std::cos(0.3)));
+  EXPECT_FLOAT_EQ(message.aWorld[2], 9.3f);
   EXPECT_FLOAT_EQ(message.contactEstimate[1], 0.0f);
   EXPECT_FLOAT_EQ(message.contactEstimate[2], 1.0f);
   EXPECT_EQ(message.timestamp, 12345678000ll);
