@@ -131,11 +131,15 @@ int main(int argc, char** argv) {
   const double speed = 0.4;
   tour.reach("stand up (recovery stand, 12)", command(12, 0), 15);
 
+  // mode 21 gait 0 is incremental: each command moves the body from where the last one left it
   robot_control_cmd_lcmt tilt = command(21, 0);
-  tilt.rpy_des[1] = 0.2f;  // look down
-  tilt.rpy_des[2] = 0.2f;  // and to the left
-  tour.reach("pose: pitch 0.2, yaw 0.2 (21)", tilt, 10);
-  tour.reach("pose: back to level (21)", command(21, 0), 10);
+  tilt.rpy_des[1] = -0.2f;  // look down (+pitch raises the head)
+  tilt.rpy_des[2] = 0.2f;   // and to the left
+  tour.reach("pose: head down 0.2, yaw 0.2 (21)", tilt, 10);
+  robot_control_cmd_lcmt untilt = command(21, 0);
+  untilt.rpy_des[1] = 0.2f;
+  untilt.rpy_des[2] = -0.2f;
+  tour.reach("pose: back to level (21)", untilt, 10);
   if (!short_tour) {
     tour.reach("shake right hand (motion 62/2)", command(62, 2), 20);
     // a motion hands over to pose control or a stand (reference), not to locomotion directly

@@ -205,7 +205,7 @@ std::string cmd_usage() {
          "  pose [--roll R] [--pitch P] [--yaw Y] [--height H] [--duration S]\n"
          "                         QP stand (3, 0): roll in " +
          interval(pose.roll) + " rad and pitch in " + interval(pose.pitch) +
-         " rad absolute,\n"
+         " rad absolute (+pitch raises the head),\n"
          "                         yaw in " +
          interval(pose.yaw) + " rad relative, height in " + interval(pose.height) + " m (default " +
          format(pose.default_height_m) +

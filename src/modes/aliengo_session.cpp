@@ -95,7 +95,9 @@ HighLevelCommand AlienGoSession::translate(const AlienGoCommand& command, const 
     case M::ForceStand: {
       stairs_walking_ = false;
       HighLevelCommand c = mc_command(ModeId::QpStand);
-      c.rpy_des = command.rpy;
+      // HighCmd's euler angles are right-handed (+pitch lowers the head, as HighState.imu.rpy
+      // reads it); robot_control_cmd's pitch raises it (commanded_pose.hpp)
+      c.rpy_des = {command.rpy[0], -command.rpy[1], command.rpy[2]};
       c.pos_des[2] = height;
       return c;
     }

@@ -2,7 +2,7 @@
 
 namespace cerebellum {
 
-void ClientBook::refused(HighLevelSource source, const RefusalNote& note) {
+void ClientBook::refused(HighLevelSource source, const ClientNote& note) {
   counters(source).banned_transitions.fetch_add(1, std::memory_order_relaxed);
   refusals(source).try_push(note);
 }
@@ -18,6 +18,11 @@ void ClientBook::refused_not_holder(HighLevelSource source, const HighLevelComma
                                  ? "another high-level client holds the robot"
                                  : "another high-level client holds the robot (HighCmd)",
                              source_name(holder)});
+}
+
+void ClientBook::clamped(HighLevelSource source, const HighLevelCommand& command, const char* reason) {
+  counters(source).clamped.fetch_add(1, std::memory_order_relaxed);
+  refusals(source).try_push({command.mode, command.gait_id, command.mode, reason, nullptr, true});
 }
 
 void ClientBook::motion_dropped(HighLevelSource source, const HighLevelCommand& command) {

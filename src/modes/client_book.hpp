@@ -13,14 +13,16 @@ class ClientBook {
  public:
   ClientCounters& counters(HighLevelSource source) { return counters_[index(source)]; }
   const ClientCounters& counters(HighLevelSource source) const { return counters_[index(source)]; }
-  RefusalRing& refusals(HighLevelSource source) { return refusals_[index(source)]; }
+  ClientNoteRing& refusals(HighLevelSource source) { return refusals_[index(source)]; }
 
   // loop thread: a refused command of the client, counted as a banned transition
-  void refused(HighLevelSource source, const RefusalNote& note);
+  void refused(HighLevelSource source, const ClientNote& note);
   // loop thread: a command or heartbeat of a client that does not hold the robot; noted once per
   // new command (heartbeats and streams repeat it)
   void refused_not_holder(HighLevelSource source, const HighLevelCommand& command, int from_mode,
                           HighLevelSource holder);
+  // loop thread: a command taken with values held inside their ranges (reason: static)
+  void clamped(HighLevelSource source, const HighLevelCommand& command, const char* reason);
   // loop thread: a mode-62 command dropped while a motion runs
   void motion_dropped(HighLevelSource source, const HighLevelCommand& command);
 
@@ -33,7 +35,7 @@ class ClientBook {
   static std::size_t index(HighLevelSource source) { return static_cast<std::size_t>(source); }
 
   std::array<ClientCounters, kHighLevelSourceCount> counters_;
-  std::array<RefusalRing, kHighLevelSourceCount> refusals_;
+  std::array<ClientNoteRing, kHighLevelSourceCount> refusals_;
   std::array<int, kHighLevelSourceCount> refused_life_count_{-1, -1};  // the last one noted per client
 };
 

@@ -32,7 +32,11 @@ HighLevelCommand hold_command_after(const HighLevelCommand& last) {
   hold.duration = 0;
   hold.vel_des = {};
   if (last.mode == static_cast<int>(ModeId::QpStand)) {
+    // an increment of nothing: the pose stays where the last command left it (the height is
+    // absolute in mode 3, the same again)
     hold.gait_id = kQpStandIncrementalGait;
+    hold.rpy_des = {};
+    hold.pos_des[0] = hold.pos_des[1] = 0.0f;
   } else if (last.mode == static_cast<int>(ModeId::Locomotion)) {
     hold.gait_id = resting_gait_of(last.gait_id);
   } else {

@@ -155,9 +155,13 @@ bool HighLevelMachine::apply(const RobotState& state, const HighLevelCommand& co
   if (target == &modes_.current()) {
     banned_ = false;
     modes_.update(state, command);
-    return true;
+  } else {
+    switch_to(*target, state, command);
   }
-  switch_to(*target, state, command);
+  // the queue holds the commands of the client holding the robot
+  if (const char* clamp = target->clamp_note()) {
+    clients_.clamped(lease_.holder().value_or(HighLevelSource::CyberDog2Lcm), command, clamp);
+  }
   return true;
 }
 

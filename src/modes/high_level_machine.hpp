@@ -73,7 +73,7 @@ class HighLevelMachine final : public OwnBehaviour {
   std::optional<HighLevelSource> holder() const { return lease_.holder(); }
   // refusals of one client's commands not yet taken by its interface's logger (the loop thread
   // pushes, one consumer thread per client pops)
-  RefusalRing& refusals(HighLevelSource source = HighLevelSource::CyberDog2Lcm) { return clients_.refusals(source); }
+  ClientNoteRing& refusals(HighLevelSource source = HighLevelSource::CyberDog2Lcm) { return clients_.refusals(source); }
   // what a client's interface thread is given (before the loop starts): its ring, its refusal
   // notes and its counters
   ClientPort port(HighLevelSource source) { return clients_.port(source, inbox_); }

@@ -1,5 +1,7 @@
 #include "modes/locomotion_mode.hpp"
 
+#include "modes/commanded_pose.hpp"
+
 #include <array>
 #include <string>
 
@@ -39,7 +41,7 @@ LocomotionCommand LocomotionMode::clamped(const HighLevelCommand& command) const
     const Eigen::Vector3d wanted(command.vel_des[0], command.vel_des[1], command.vel_des[2]);
     c.velocity = wanted.cwiseMax(limits->min).cwiseMin(limits->max);
   }
-  c.pitch_rad = ranges_.pitch.clamp(command.rpy_des[1]);
+  c.pitch_rad = body_pitch_from_command(ranges_.pitch.clamp(command.rpy_des[1]));
   c.height_m = command.pos_des[2] > 0.0f ? ranges_.height.clamp(command.pos_des[2]) : ranges_.default_height_m;
   c.step_height_m = {kStepHeightRange.clamp(command.step_height[0]), kStepHeightRange.clamp(command.step_height[1])};
   c.value = command.value;

@@ -31,6 +31,9 @@ class Mode {
   virtual void exit() {}
   // a new command while this mode runs (same mode id, maybe another gait or target)
   virtual void update(const RobotState& state, const HighLevelCommand& command) = 0;
+  // why the command of the last enter() / update() was clamped (a static string, the client's
+  // log says it), or nullptr when it was taken as sent
+  virtual const char* clamp_note() const { return nullptr; }
   // one control tick; must not block, allocate or print
   virtual void run(const RobotState& state, JointCommand& command) = 0;
   // the contacts the last run() planned for the next tick (for the estimator); none unless it steps

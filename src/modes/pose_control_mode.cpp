@@ -10,6 +10,16 @@
 #include "core/robot_model.hpp"
 
 namespace cerebellum {
+namespace {
+
+// gait 5's pose is centred: its x, y offsets are not read
+HighLevelCommand centred(const HighLevelCommand& command) {
+  HighLevelCommand c = command;
+  c.pos_des[0] = c.pos_des[1] = 0.0f;
+  return c;
+}
+
+}  // namespace
 
 PoseControlMode::PoseControlMode(const PoseControlConfig& config)
     : config_(config), support_(config.support), distribution_(config.distribution), trim_(config.trim) {}
@@ -39,7 +49,7 @@ void PoseControlMode::enter(const RobotState& state, const HighLevelCommand& com
   trim_.reset();
   for (Eigen::Vector3d& offset : foot_offsets_) offset.setZero();
   for (Eigen::Vector3d& offset : offsets_now_) offset.setZero();
-  base_height_m_ = config_.ranges.default_height_m;
+  pose_.reset(config_.ranges.default_height_m);
   last_time_s_ = state.time_s;
   started_ = true;
   update(state, command);
@@ -48,19 +58,11 @@ void PoseControlMode::enter(const RobotState& state, const HighLevelCommand& com
 BodyPose PoseControlMode::goal_pose(const HighLevelCommand& command) {
   const PoseControlRanges& r = config_.ranges;
   BodyPose goal;
-  goal.rpy = {r.roll.clamp(command.rpy_des[0]), r.pitch.clamp(command.rpy_des[1]), r.yaw.clamp(command.rpy_des[2])};
-  // the stand pose: level, centre of mass over the footholds, at the base height
+  goal.rpy = pose_.body_rpy();
+  // the stand pose: level, centre of mass over the footholds, at the commanded height
   const Eigen::Vector2d com_xy = frame_.centroid(kAllLegs).head<2>();
   const Eigen::Vector2d stand_xy = com_xy - (rotation_from_rpy(goal.rpy) * config_.com_in_body).head<2>();
-  double height = base_height_m_;
-  Eigen::Vector2d offset = Eigen::Vector2d::Zero();
-  if (command.gait_id == kPoseAbsoluteHeightGait) {
-    height = base_height_m_ = r.height.clamp(command.pos_des[2]);
-  } else {
-    offset = {r.offset_x.clamp(command.pos_des[0]), r.offset_y.clamp(command.pos_des[1])};
-    height = r.height.clamp(base_height_m_ + command.pos_des[2]);
-  }
-  goal.position << stand_xy + offset, height;
+  goal.position << stand_xy + pose_.offset_m(), pose_.height_m();
   // rotation about the control point: the body origin swings around it
   const Eigen::Vector3d centre(r.ctrl_point.clamp(command.ctrl_point[0]), r.ctrl_point.clamp(command.ctrl_point[1]),
                                r.ctrl_point.clamp(command.ctrl_point[2]));
@@ -77,16 +79,21 @@ BodyPose PoseControlMode::goal_pose(const HighLevelCommand& command) {
 void PoseControlMode::update(const RobotState&, const HighLevelCommand& command) {
   gait_ = command.gait_id;
   timed_ = command.duration > 0;
-  if (gait_ == 3) {
+  clamp_note_ = nullptr;
+  if (gait_ == kPoseHoldGait) {
     // hold: stop where the body is now; a leg in motion finishes its change
     ramp_.hold(ramp_.value());
     return;
   }
+  const bool clamped = command.gait_id == kPoseAbsoluteHeightGait
+                           ? pose_.set(centred(command), command.pos_des[2], config_.ranges)
+                           : pose_.add(command, command.pos_des[2], config_.ranges);
+  clamp_note_ = clamped ? "the pose would leave its range (docs/modes.md, mode 21): held at the range's edge" : nullptr;
   const int leg = lifted_leg_from_contact(command.contact);
   support_.request(leg);
   if (leg >= 0) foot_offsets_[static_cast<std::size_t>(leg)] = lifted_foot_offset(command, leg, config_.foot_offset);
   const BodyPose goal = goal_pose(command);
-  const double needed_s = move_duration_s(ramp_.value(), goal, config_.speed);
+  const double needed_s = move_duration_s(ramp_.value(), goal, timed_ ? config_.timed_speed : config_.speed);
   ramp_.move_to(goal, timed_ ? std::max(needed_s, command.duration * 1e-3) : needed_s);
 }
 

@@ -1,11 +1,14 @@
 // Mode 21: position-based pose control. The feet stay on their footholds (stance frame anchored
 // on entry); the body pose is reached by inverse kinematics, the joints by PD with a gravity
-// feedforward shared among the loaded feet.
-//   gait 0: rpy_des and pos_des are a pose about the stand pose (ctrl_point: rotation centre);
-//   gait 5: pos_des[2] is the absolute height (duration > 0), which becomes the stand height;
-//   gait 2: swing one leg (contact bits) to its foot_pose offset after shifting the weight;
+// feedforward shared among the loaded feet. The pose starts as the level stand on entry.
+//   gait 0: incremental (the seed's "incremental position control"): rpy_des and pos_des move the
+//           body from where the previous command left it, over the duration (ctrl_point: the
+//           rotation centre); the sum is held inside the ranges, and a clamp is reported;
+//   gait 5: absolute: pos_des[2] the height (duration > 0), rpy_des the attitude, x, y centred;
+//   gait 2: as gait 0, and swing one leg (contact bits) to its foot_pose offset after shifting
+//           the weight;
 //   gait 3: hold the pose reached so far.
-// Contact bits and foot_pose apply in gaits 0, 2 and 5.
+// Contact bits and foot_pose apply in gaits 0, 2 and 5. +pitch raises the head (commanded_pose).
 #pragma once
 
 #include "control/leg_gravity.hpp"
@@ -15,6 +18,7 @@
 #include "control/support_sequence.hpp"
 #include "core/robot_model.hpp"
 #include "modes/command_ranges.hpp"
+#include "modes/commanded_pose.hpp"
 #include "modes/mode.hpp"
 
 namespace cerebellum {
@@ -26,7 +30,10 @@ inline constexpr int kPoseAbsoluteHeightGait = 5;
 struct PoseControlConfig {
   PoseControlRanges ranges;
   FootOffsetRanges foot_offset;
+  // an untimed command moves at most this fast; a timed one takes its duration (the seed: "how
+  // long the body takes to move towards the target posture"), never faster than timed_speed
   PoseSpeed speed{0.8, 0.12, 0.3};
+  PoseSpeed timed_speed{1.6, 0.12, 0.3};
   // a lifted foot moves to a new offset at most this fast (a hand shake's up and down): a jump
   // of the target swings the leg at the joints' torque limit
   double lifted_foot_speed_m_s = 0.4;
@@ -49,9 +56,10 @@ class PoseControlMode final : public Mode {
   void run(const RobotState& state, JointCommand& command) override;
   int gait_id() const override { return gait_; }
   int progress_percent() const override;
+  const char* clamp_note() const override { return clamp_note_; }
 
  private:
-  // body pose (stance frame) a gait 0 / 5 command asks for
+  // body pose (stance frame) of the commanded pose, about the command's control point
   BodyPose goal_pose(const HighLevelCommand& command);
 
   PoseControlConfig config_;
@@ -64,7 +72,8 @@ class PoseControlMode final : public Mode {
   std::array<Eigen::Vector3d, kNumLegs> foot_offsets_{};
   // per leg: where its offset is on the way to foot_offsets_ (rate-limited)
   std::array<Eigen::Vector3d, kNumLegs> offsets_now_{};
-  double base_height_m_ = 0.0;
+  CommandedPose pose_;                // what the commands asked for so far
+  const char* clamp_note_ = nullptr;  // the last command's clamp, if any
   double last_time_s_ = 0.0;
   bool started_ = false;
   int gait_ = 0;

@@ -1,11 +1,15 @@
-// Mode 3: the force-based pose (QP stand). Gait 0 takes rpy_des / pos_des as absolute targets
-// reached at the normal pose speed; gaits 1 and 3 move to the same targets in small increments
-// (a slow ramp), so the hold command (3, 1) the queue inserts keeps the pose. Contact bits lift
-// one leg while the robot balances on the other three.
+// Mode 3: the force-based pose (QP stand). Gait 0 takes rpy_des / pos_des x, y as an absolute
+// pose reached at the normal pose speed; gaits 1 and 3 are incremental (the reference): rpy_des and
+// pos_des x, y move the pose from where the previous command left it, at the slower speed, so the
+// hold command (3, 1, no increment) the queue inserts keeps the pose. The height pos_des[2] is
+// absolute in every gait (0: gait 0 the default, gaits 1, 3 unchanged). The pose starts as the
+// level stand on entry; a sum outside the ranges is held at their edge and reported. Contact bits
+// lift one leg while the robot balances on the other three. +pitch raises the head (commanded_pose).
 #pragma once
 
 #include "control/qp_stand.hpp"
 #include "modes/command_ranges.hpp"
+#include "modes/commanded_pose.hpp"
 #include "modes/mode.hpp"
 
 namespace cerebellum {
@@ -31,6 +35,7 @@ class QpStandMode final : public Mode {
   void run(const RobotState& state, JointCommand& command) override;
   int gait_id() const override { return gait_; }
   int progress_percent() const override;
+  const char* clamp_note() const override { return clamp_note_; }
 
   const QpStand& stand() const { return stand_; }
 
@@ -39,10 +44,12 @@ class QpStandMode final : public Mode {
   QpStand stand_;
   int gait_ = 0;
   bool timed_ = false;
+  CommandedPose pose_;  // what the commands asked for so far
+  const char* clamp_note_ = nullptr;
 };
 
-// the goal a mode-3 command asks for, clamped to the ranges
-QpStandGoal qp_stand_goal(const HighLevelCommand& command, const QpStandRanges& ranges,
+// the goal of the commanded pose, with the command's lifted leg and its foot offset
+QpStandGoal qp_stand_goal(const CommandedPose& pose, const HighLevelCommand& command,
                           const FootOffsetRanges& foot_offset);
 
 }  // namespace cerebellum

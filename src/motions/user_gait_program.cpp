@@ -1,5 +1,7 @@
 #include "motions/user_gait_program.hpp"
 
+#include "modes/commanded_pose.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -113,7 +115,7 @@ UserGaitStep decode_user_gait_step(const HighLevelCommand& step) {
   UserGaitStep decoded;
   decoded.duration_s = std::max(0, step.duration) * 1e-3;
   decoded.velocity = {step.vel_des[0], step.vel_des[1], step.vel_des[2]};  // the controller clamps it
-  decoded.pitch_rad = ranges.pitch.clamp(step.rpy_des[1]);
+  decoded.pitch_rad = body_pitch_from_command(ranges.pitch.clamp(step.rpy_des[1]));
   decoded.height_m = step.pos_des[2] > 0.0f ? ranges.height.clamp(step.pos_des[2]) : kDefaultBodyHeightM;
   UserStepTargets& legs = decoded.legs;
   legs.roll_rad = ranges.roll.clamp(step.rpy_des[0]);

@@ -20,12 +20,12 @@ TEST(ClientBook, ARefusalIsCountedAndNotedForItsOwnClientOnly) {
   book.refused(kAlienGo, {11, 3, 12, "transition not allowed from the current mode", nullptr});
   EXPECT_EQ(aliengo.counters().banned_transitions.load(), 1u);
   EXPECT_EQ(lcm.counters().banned_transitions.load(), 0u);
-  EXPECT_FALSE(lcm.next_refusal().has_value());
-  const std::optional<RefusalNote> note = aliengo.next_refusal();
+  EXPECT_FALSE(lcm.next_note().has_value());
+  const std::optional<ClientNote> note = aliengo.next_note();
   ASSERT_TRUE(note.has_value());
   EXPECT_EQ(note->mode, 11);
   EXPECT_EQ(note->from_mode, 12);
-  EXPECT_FALSE(aliengo.next_refusal().has_value());
+  EXPECT_FALSE(aliengo.next_note().has_value());
 }
 
 TEST(ClientBook, ACommandRefusedForNotHoldingTheRobotIsNotedOncePerNewCommandButAlwaysCounted) {
@@ -36,7 +36,7 @@ TEST(ClientBook, ACommandRefusedForNotHoldingTheRobotIsNotedOncePerNewCommandBut
   book.refused_not_holder(kAlienGo, cmd(ModeId::Locomotion, 3, 2), 12, kLcm);
   EXPECT_EQ(port.counters().refused_not_holder.load(), 6u);
   std::size_t notes = 0;
-  while (const std::optional<RefusalNote> note = port.next_refusal()) {
+  while (const std::optional<ClientNote> note = port.next_note()) {
     ++notes;
     EXPECT_STREQ(note->holder, source_name(kLcm));
   }

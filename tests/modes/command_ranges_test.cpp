@@ -1,5 +1,6 @@
 // Clamping and decoding of the command fields the standing modes use.
 #include "modes/command_ranges.hpp"
+#include "modes/commanded_pose.hpp"
 
 #include <gtest/gtest.h>
 
@@ -32,25 +33,22 @@ TEST(CommandRanges, FootOffsetComesFromTheFrontOrRearTripleAndIsClamped) {
   EXPECT_TRUE(lifted_foot_offset(c, 3).isApprox(Eigen::Vector3d(0.15, 0.10, 0.0), 1e-6));
 }
 
-TEST(CommandRanges, QpStandGoalClampsEveryField) {
+TEST(CommandRanges, QpStandGoalIsTheCommandedPoseWithTheCommandsLiftedLeg) {
   HighLevelCommand c;
   c.mode = 3;
   c.rpy_des = {-1.0f, 1.0f, 2.0f};
   c.pos_des = {0.3f, -0.3f, 0.5f};
   c.contact = 0b0111;
-  const QpStandGoal goal = qp_stand_goal(c, QpStandRanges{}, FootOffsetRanges{});
+  CommandedPose pose;
+  EXPECT_TRUE(pose.set(c, c.pos_des[2], QpStandRanges{}));
+  const QpStandGoal goal = qp_stand_goal(pose, c, FootOffsetRanges{});
   EXPECT_DOUBLE_EQ(goal.pose.rpy.x(), -0.52);
-  EXPECT_DOUBLE_EQ(goal.pose.rpy.y(), 0.3);
+  EXPECT_DOUBLE_EQ(goal.pose.rpy.y(), -0.3) << "0.3 head up is a right-handed pitch of -0.3";
   EXPECT_DOUBLE_EQ(goal.pose.rpy.z(), 0.65);
   EXPECT_DOUBLE_EQ(goal.pose.position.x(), 0.05);
   EXPECT_DOUBLE_EQ(goal.pose.position.y(), -0.05);
   EXPECT_DOUBLE_EQ(goal.pose.position.z(), 0.32);
   EXPECT_EQ(goal.lifted_leg, 3);
-  // height not given: the default
-  c.pos_des[2] = 0.0f;
-  EXPECT_DOUBLE_EQ(qp_stand_goal(c, QpStandRanges{}, FootOffsetRanges{}).pose.position.z(), 0.235);
-  c.pos_des[2] = 0.1f;
-  EXPECT_DOUBLE_EQ(qp_stand_goal(c, QpStandRanges{}, FootOffsetRanges{}).pose.position.z(), 0.15);
 }
 
 TEST(CommandRanges, LocomotionClampsVelocityPerGaitAndStandFields) {
@@ -65,7 +63,7 @@ TEST(CommandRanges, LocomotionClampsVelocityPerGaitAndStandFields) {
   c.step_height = {0.1f, -0.1f};
   const LocomotionCommand l = mode.clamped(c);
   EXPECT_TRUE(l.velocity.isApprox(Eigen::Vector3d(1.6, -0.55, 0.5), 1e-6));
-  EXPECT_DOUBLE_EQ(l.pitch_rad, -0.25);
+  EXPECT_DOUBLE_EQ(l.pitch_rad, 0.25) << "0.9 head down held at 0.25: a right-handed pitch of +0.25";
   EXPECT_DOUBLE_EQ(l.height_m, 0.2);
   EXPECT_DOUBLE_EQ(l.step_height_m[0], 0.06);
   EXPECT_DOUBLE_EQ(l.step_height_m[1], 0.005);  // the MC's floor, not the gait's default

@@ -1,9 +1,11 @@
-// Mode 21 in simulation: position-based pose control reaches its poses (gait 0) and heights
+// Mode 21 in simulation: position-based pose control reaches its poses (gait 0, incremental: each
+// command moves the body from where the last one left it; +pitch raises the head) and heights
 // (gait 5), rotates about the control point, lifts a leg for a hand shake (gait 2) while the body
-// stays up, holds wherever it is told to (gait 3), and clamps out-of-range commands.
+// stays up, holds wherever it is told to (gait 3), and clamps out-of-range commands, saying so.
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <optional>
 #include <string>
 
 #include "modes/mode_sim.hpp"
@@ -51,7 +53,7 @@ TEST(PoseControlSim, ReachesCommandedRollPitchYawAndHeightOffset) {
     const Eigen::Vector3d rpy = sim.true_rpy();
     const std::string label = std::to_string(p.roll) + " " + std::to_string(p.pitch) + " " + std::to_string(p.yaw);
     EXPECT_NEAR(rpy.x(), p.roll, 0.03) << label;
-    EXPECT_NEAR(rpy.y(), p.pitch, 0.03) << label;
+    EXPECT_NEAR(rpy.y(), -p.pitch, 0.03) << label << " (+pitch raises the head: a right-handed pitch of -pitch)";
     EXPECT_NEAR(wrap_angle(rpy.z() - yaw0), p.yaw, 0.03) << label;
     // pitch about the body origin leaves its height alone
     EXPECT_NEAR(sim.true_height(), 0.235 + p.dz, 0.01) << label;
@@ -93,15 +95,63 @@ TEST(PoseControlSim, ClampsRollPitchYawToTheirRanges) {
     sim.send(c, 2.5);
     Eigen::Vector3d rpy = sim.true_rpy();
     rpy.z() = wrap_angle(rpy.z() - yaw0);
-    EXPECT_NEAR(rpy[axis], -0.45, 0.03) << axis;
+    // -1 head down is 0.45 head down: a right-handed pitch of +0.45
+    EXPECT_NEAR(rpy[axis], axis == 1 ? 0.45 : -0.45, 0.03) << axis;
+    // taken, and the client told so
+    EXPECT_EQ(sim.machine.counters().clamped.load(), 1u) << axis;
+    std::optional<ClientNote> note = sim.machine.refusals().try_pop();
+    ASSERT_TRUE(note.has_value()) << axis;
+    EXPECT_TRUE(note->clamped);
+    EXPECT_EQ(sim.status().switch_status, SwitchStatus::Done) << axis;
   }
+}
+
+TEST(PoseControlSim, HeadUpThenHeadDownEndsLevelAsTheSeedsBasicMotionExampleExpects) {
+  // the seed's section 2.4.1: 21/0 rpy_des [0, 0.3, 0] "Head up" for 0.5 s, then [0, -0.3, 0]
+  // "Head down" for 0.3 s: incremental, so the second undoes the first
+  ModeSim sim;
+  stand_in_pose_control(sim);
+  const double pitch0 = sim.true_rpy().y();
+  HighLevelCommand up = pose(0.0, 0.3, 0.0);
+  up.duration = 500;
+  sim.send(up, 0.5);
+  sim.run(0.2);
+  EXPECT_NEAR(sim.true_rpy().y() - pitch0, -0.3, 0.03) << "the nose is up";
+  HighLevelCommand down = pose(0.0, -0.3, 0.0);
+  down.duration = 300;
+  sim.send(down, 0.3);
+  sim.run(0.3);
+  EXPECT_NEAR(sim.true_rpy().y(), 0.0, 0.03) << "level again";
+  EXPECT_EQ(sim.machine.counters().clamped.load(), 0u);
+}
+
+TEST(PoseControlSim, EachPoseCommandMovesTheBodyFromWhereTheLastLeftIt) {
+  ModeSim sim;
+  stand_in_pose_control(sim);
+  const double yaw0 = sim.true_rpy().z();
+  sim.send(pose(0.1, 0.0, 0.15), 1.5);
+  sim.send(pose(0.1, 0.0, 0.15), 1.5);
+  Eigen::Vector3d rpy = sim.true_rpy();
+  EXPECT_NEAR(rpy.x(), 0.2, 0.03);
+  EXPECT_NEAR(wrap_angle(rpy.z() - yaw0), 0.3, 0.03);
+  // heartbeats (the same life_count) move nothing: ModeSim repeats the last command every 0.1 s
+  sim.run(1.0);
+  EXPECT_NEAR(sim.true_rpy().x(), 0.2, 0.03);
+  // a hold, then a height (gait 5: absolute, level), then an increment from there
+  sim.send(command(ModeId::PoseControl, 3), 0.5);
+  sim.send(height(0.2, 500), 1.5);
+  EXPECT_NEAR(sim.true_rpy().x(), 0.0, 0.03);
+  EXPECT_NEAR(sim.true_height(), 0.2, 0.01);
+  sim.send(pose(0.0, 0.0, 0.0, 0.03), 1.5);
+  EXPECT_NEAR(sim.true_height(), 0.23, 0.01);
 }
 
 TEST(PoseControlSim, PosesBeyondTheLegsReachAreCutBackAndHeldSafely) {
   ModeSim sim;
   stand_in_pose_control(sim);
-  // pitch and yaw at their limits together, at the stand height: the rear legs cannot reach
-  sim.send(pose(0.0, 0.45, 0.45), 2.5);
+  // pitch (head down) and yaw at their limits together, at the stand height: the rear legs cannot
+  // reach
+  sim.send(pose(0.0, -0.45, 0.45), 2.5);
   const Eigen::Vector3d rpy = sim.true_rpy();
   EXPECT_GT(rpy.y(), 0.1);
   EXPECT_LT(rpy.y(), 0.45);
@@ -125,7 +175,7 @@ TEST(PoseControlSim, PitchTurnsAboutTheControlPoint) {
   };
   sim.send(height(0.2, 500), 1.0);
   const Eigen::Vector3d before = point_in_world();
-  HighLevelCommand c = pose(0.0, 0.2, 0.0);
+  HighLevelCommand c = pose(0.0, -0.2, 0.0);  // head down 0.2
   c.ctrl_point = {0.2f, 0.0f, 0.0f};
   sim.send(c, 2.0);
   EXPECT_NEAR(sim.true_rpy().y(), 0.2, 0.03);

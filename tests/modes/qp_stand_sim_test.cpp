@@ -46,7 +46,7 @@ TEST(QpStandSim, ReachesRollPitchYawAndHeightTargets) {
     const std::string label = std::to_string(p.roll) + " " + std::to_string(p.pitch) + " " + std::to_string(p.yaw) +
                               " " + std::to_string(p.height);
     EXPECT_NEAR(rpy.x(), p.roll, 0.03) << label;
-    EXPECT_NEAR(rpy.y(), p.pitch, 0.03) << label;
+    EXPECT_NEAR(rpy.y(), -p.pitch, 0.03) << label << " (+pitch raises the head: a right-handed pitch of -pitch)";
     EXPECT_NEAR(wrap_angle(rpy.z() - yaw0), p.yaw, 0.03) << label;
     EXPECT_NEAR(sim.true_height(), p.height, 0.01) << label;
     EXPECT_EQ(sim.status().order_process_bar, 100) << label;
@@ -58,13 +58,42 @@ TEST(QpStandSim, ClampsTargetsOutsideTheInterfaceRanges) {
   ModeSim sim;
   stand_in_qp_stand(sim);
   // height 0.05 -> 0.15; at 0.2 m (where the legs can reach it) roll 0.9 -> 0.52, pitch -0.6 -> -0.25
+  // (0.25 head down: a right-handed pitch of +0.25)
   sim.send(qp_pose(0.0, 0.0, 0.0, 0.05), 2.5);
   EXPECT_NEAR(sim.true_height(), 0.15, 0.01);
   sim.send(qp_pose(0.9, 0.0, 0.0, 0.2), 3.0);
   EXPECT_NEAR(sim.true_rpy().x(), 0.52, 0.03);
   sim.send(qp_pose(0.0, -0.6, 0.0, 0.2), 3.0);
-  EXPECT_NEAR(sim.true_rpy().y(), -0.25, 0.03);
+  EXPECT_NEAR(sim.true_rpy().y(), 0.25, 0.03);
   EXPECT_EQ(sim.status().mode, 3);
+}
+
+TEST(QpStandSim, GaitsOneAndThreeMoveThePoseFromWhereTheLastLeftItAndGaitZeroSetsIt) {
+  ModeSim sim;
+  stand_in_qp_stand(sim);
+  const double yaw0 = sim.true_rpy().z();
+  HighLevelCommand step = qp_pose(0.1, 0.0, 0.15, 0.0);
+  step.gait_id = 1;
+  sim.send(step, 2.5);
+  step.gait_id = 3;
+  sim.send(step, 2.5);
+  EXPECT_NEAR(sim.true_rpy().x(), 0.2, 0.03) << "0.1 twice";
+  EXPECT_NEAR(wrap_angle(sim.true_rpy().z() - yaw0), 0.3, 0.03);
+  EXPECT_NEAR(sim.true_height(), 0.235, 0.01) << "height 0 in gaits 1, 3: unchanged";
+  // the hold the queue puts after a timed entry adds nothing
+  step = qp_pose(0.0, 0.1, 0.0, 0.0);
+  step.gait_id = 1;
+  step.duration = 500;
+  sim.send(step, 3.0);
+  EXPECT_EQ(sim.status().gait_id, 1);
+  EXPECT_NEAR(sim.true_rpy().y(), -0.1, 0.03) << "head up 0.1, once";
+  EXPECT_NEAR(sim.true_rpy().x(), 0.2, 0.03);
+  // gait 0: absolute again
+  sim.send(qp_pose(0.0, 0.0, 0.0, 0.25), 2.5);
+  EXPECT_NEAR(sim.true_rpy().x(), 0.0, 0.03);
+  EXPECT_NEAR(sim.true_rpy().y(), 0.0, 0.03);
+  EXPECT_NEAR(sim.true_height(), 0.25, 0.01);
+  EXPECT_EQ(sim.machine.counters().clamped.load(), 0u);
 }
 
 TEST(QpStandSim, BalancesOnThreeLegsWithEachLegLifted) {
@@ -121,13 +150,12 @@ TEST(LocomotionStandSim, FollowsHeightAndPitchWithinLocomotionRanges) {
   EXPECT_EQ(sim.status().mode, 11);
   EXPECT_EQ(sim.status().gait_id, 1);
   EXPECT_NEAR(sim.true_height(), 0.26, 0.01);
-  EXPECT_NEAR(sim.true_rpy().y(), 0.1, 0.03);
-  // beyond the ranges: height 0.35 -> 0.28; pitch 0.5 -> 0.3 (one at a time: both at once is
-  // beyond the front legs' reach)
+  EXPECT_NEAR(sim.true_rpy().y(), -0.1, 0.03) << "head up 0.1: a right-handed pitch of -0.1";
+  // beyond the ranges: height 0.35 -> 0.28; pitch 0.5 -> 0.3 head up (one at a time)
   sim.send(loco(1, 0.35, 0.0), 2.5);
   EXPECT_NEAR(sim.true_height(), 0.28, 0.01);
   sim.send(loco(1, 0.0, 0.5), 2.5);
-  EXPECT_NEAR(sim.true_rpy().y(), 0.3, 0.03);
+  EXPECT_NEAR(sim.true_rpy().y(), -0.3, 0.03);
 }
 
 TEST(LocomotionStandSim, VelocityChangesDoNotRestartTheStand) {

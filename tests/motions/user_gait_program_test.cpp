@@ -63,7 +63,8 @@ TEST(UserGaitStepDecoding, HeightZeroMeansTheDefaultAndPoseIsClamped) {
   const UserGaitStep decoded = decode_user_gait_step(step);
   EXPECT_DOUBLE_EQ(decoded.height_m, UserGaitRanges{}.height.upper);
   EXPECT_DOUBLE_EQ(decoded.legs.roll_rad, UserGaitRanges{}.roll.upper);
-  EXPECT_DOUBLE_EQ(decoded.pitch_rad, UserGaitRanges{}.pitch.lower);
+  // -1 is the most head-down pitch the range allows: a right-handed pitch the other way
+  EXPECT_DOUBLE_EQ(decoded.pitch_rad, -UserGaitRanges{}.pitch.lower);
   EXPECT_FLOAT_EQ(decoded.legs.yaw_offset_rad, 0.1f);
 }
 

@@ -29,7 +29,7 @@ LcmHighLevelAdapter::LcmHighLevelAdapter(ClientPort port, UserGaitUpload& user_g
       response_lcm_(open_lcm_url(config.response_url, kInterfaceName)),
       odometry_lcm_(open_lcm_url(config.odometry_url, kInterfaceName)),
       schedule_(loop_period_s),
-      refusal_log_(log, kInterfaceName, "refusals (BAN_TRANS)", kRefusalLinesPerSecond),
+      refusal_log_(log, kInterfaceName, "refusals (BAN_TRANS) and clamps", kRefusalLinesPerSecond),
       gait_file_log_(log, kInterfaceName, "user_gait_file results", kGaitFileLinesPerSecond),
       count_log_period_(wall_seconds()) {
   command_lcm_->subscribe(kCommandChannel, &LcmHighLevelAdapter::on_command, this);
@@ -149,9 +149,11 @@ void LcmHighLevelAdapter::log_refusals() {
   const double now_s = wall_seconds();
   refusal_log_.tick(now_s);
   gait_file_log_.tick(now_s);
-  while (std::optional<RefusalNote> note = port_.next_refusal()) {
+  while (std::optional<ClientNote> note = port_.next_note()) {
     char line[256];
-    if (note->holder != nullptr) {
+    if (note->clamped) {
+      std::snprintf(line, sizeof line, "clamped mode %d gait %d (taken): %s", note->mode, note->gait_id, note->reason);
+    } else if (note->holder != nullptr) {
       std::snprintf(line, sizeof line, "refused mode %d gait %d while in mode %d (switch_status 5 BAN_TRANS): %s (%s)",
                     note->mode, note->gait_id, note->from_mode, note->reason, note->holder);
     } else {

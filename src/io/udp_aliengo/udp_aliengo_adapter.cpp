@@ -126,11 +126,12 @@ void UdpAliengoAdapter::log_refusals(double now_s) {
   }
   // what the MC refused of the commands the session made (another client holds the robot, a
   // transition the MC does not allow, a protection)
-  while (std::optional<RefusalNote> note = client_.next_refusal()) {
+  while (std::optional<ClientNote> note = client_.next_note()) {
     char line[256];
-    std::snprintf(line, sizeof line, "the MC refused mode %d gait %d while in mode %d: %s%s%s%s", note->mode,
-                  note->gait_id, note->from_mode, note->reason, note->holder != nullptr ? " (" : "",
-                  note->holder != nullptr ? note->holder : "", note->holder != nullptr ? ")" : "");
+    std::snprintf(line, sizeof line, "the MC %s mode %d gait %d while in mode %d: %s%s%s%s",
+                  note->clamped ? "clamped" : "refused", note->mode, note->gait_id, note->from_mode, note->reason,
+                  note->holder != nullptr ? " (" : "", note->holder != nullptr ? note->holder : "",
+                  note->holder != nullptr ? ")" : "");
     refusal_log_.line(now_s, line);
   }
 }

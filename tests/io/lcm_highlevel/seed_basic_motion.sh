@@ -16,10 +16,15 @@ seed=$(seed_file "$seeds") || exit $?
 example="$work/seed_basic_motion.py"
 extract_code_block "$seed" '^#### 2\.4\.1' '^```python' "$example" "robot_control_cmd"
 start_status_recorder "$cerebellum" "$work/status.log"
+# the trunk's pitch on the simulation's truth while the example poses the body
+PYTHONPATH="$types" "$python" "$(dirname "$0")/pose_truth_watch.py" > "$work/pose_truth.log" 2>&1 &
+pose_watch=$!
 PYTHONPATH="$types" timeout 150 "$python" "$example"
 result=$?
 sleep 1  # the example stops once it sees its last mode; let the recorder print it too
 stop_status_recorder
+kill -INT "$pose_watch" 2>/dev/null
+wait "$pose_watch" 2>/dev/null
 echo "example exit status: $result"
 [[ $result -eq 0 ]] || exit 1
 # the distinct response lines, in order
@@ -41,6 +46,17 @@ expect "head up / down (21/0)" '^mode 21 gait 0 bar [0-9]+ switch 0 '
 expect "body height (21/5)" '^mode 21 gait 5 bar [0-9]+ switch 0 '
 expect "turning trot (11/26)" '^mode 11 gait 26 bar [0-9]+ switch 0 '
 expect "lie down (7)" '^mode 7 gait 0 bar [0-9]+ switch 0 '
+# head up (+0.3: the nose rises), then head down (-0.3: incremental, so level again) on the truth;
+# pitch is right-handed (negative: nose up)
+cat "$work/pose_truth.log"
+nose_up=$(sed -n 's/^most_nose_up_in_21_0_rad=//p' "$work/pose_truth.log")
+level=$(sed -n 's/^pitch_when_21_5_came_rad=//p' "$work/pose_truth.log")
+if ! awk -v p="$nose_up" 'BEGIN { exit !(p != "none" && p != "" && p < -0.25) }'; then
+  echo "WRONG: head up did not raise the nose (most nose-up pitch in 21/0: $nose_up rad, want < -0.25)"; fail=1
+fi
+if ! awk -v p="$level" 'BEGIN { exit !(p != "none" && p != "" && p > -0.03 && p < 0.03) }'; then
+  echo "WRONG: after head down the trunk is not level (pitch when 21/5 came: $level rad, want within 0.03)"; fail=1
+fi
 # the two-leg stand was neither refused nor ended by a protection
 if grep -Eq '^mode 64 .* switch [2-7] ' "$work/steps.log"; then
   echo "WRONG: the two-leg stand refused or protected:"; grep -E '^mode 64 .* switch [2-7] ' "$work/steps.log" | head -3
