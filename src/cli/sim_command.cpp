@@ -99,6 +99,7 @@ int run_sim_command(const std::vector<std::string>& args) {
 
     char speed[32] = "max";
     if (options.speed > 0.0) std::snprintf(speed, sizeof(speed), "%gx real time", options.speed);
+    std::printf("cerebellum startup %s: %s\n", startup_name(config.startup), startup_meaning(config.startup));
     std::printf("cerebellum ready: simulated CyberDog2 (%s), %.0f Hz loop, speed %s; serving %s\n",
                 config.robot.model_path.c_str(), 1.0 / config.loop_period_s, speed, served_endpoints(config).c_str());
     std::fflush(stdout);

@@ -121,6 +121,31 @@ void read_highlevel(const SectionReader& section, HighLevelLcmConfig& highlevel)
 
 }  // namespace
 
+const char* startup_name(Startup startup) {
+  switch (startup) {
+    case Startup::Stand: return "stand";
+    case Startup::Off: return "off";
+    case Startup::Damper: return "damper";
+  }
+  return "stand";
+}
+
+const char* startup_meaning(Startup startup) {
+  switch (startup) {
+    case Startup::Off:
+      return "the robot lies with the motors off (mode 0), as after power-on; the first client takes it: a "
+             "high-level one (mode 12 stands it up) or a low-level one (motor SDK, shared memory), and the other is "
+             "refused";
+    case Startup::Damper:
+      return "the joints are damped (mode 7); a high-level client or a low-level one (motor SDK, shared memory) may "
+             "take the robot";
+    case Startup::Stand:
+      return "the MC stands the robot up by itself (mode 12); low-level clients are refused (they take over only "
+             "from mode 0 or 7)";
+  }
+  return "";
+}
+
 McConfig default_config() {
   McConfig config;
   config.robot.model_path = find_default_model();
@@ -145,8 +170,8 @@ McConfig load_config(const std::string& path) {
   const fs::path base_dir = fs::absolute(path).parent_path();
 
   if (root["mc"]) {
-    std::string startup = "stand";
-    std::string stand = "mpc";
+    std::string startup = startup_name(config.startup);
+    std::string stand = config.locomotion_stand == LocomotionStand::Qp ? "qp" : "mpc";
     const SectionReader mc(root["mc"], path, "mc", {"startup", "locomotion_stand"});
     mc.text("startup", startup, {"stand", "off", "damper"});
     mc.text("locomotion_stand", stand, {"mpc", "qp"});

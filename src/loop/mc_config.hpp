@@ -23,13 +23,18 @@ namespace cerebellum {
 
 // what the MC does by itself after start
 enum class Startup {
-  Stand,   // stand up and hold (the default demo)
-  Off,     // motors passive; low-level clients may take over
+  Stand,   // stand up and hold
+  Off,     // motors passive, as the robot after power-on: it lies and takes a high-level client or
+           // a low-level one (the motor SDK and the shared memory take over only from Off or PureDamper)
   Damper,  // joint damping (PureDamper); low-level clients may take over
 };
+const char* startup_name(Startup startup);  // as the configuration writes it
+// what the robot does at start and who may take it, for the start-up log line
+const char* startup_meaning(Startup startup);
 
 struct McConfig {
-  Startup startup = Startup::Stand;
+  // as the robot powers on: lying, motors off, whichever client comes first may take it
+  Startup startup = Startup::Off;
   LocomotionStand locomotion_stand = LocomotionStand::Mpc;
   MujocoBackendConfig robot;
   double loop_period_s = 0.002;

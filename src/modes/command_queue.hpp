@@ -12,7 +12,9 @@ namespace cerebellum {
 class CommandQueue {
  public:
   static constexpr double kHeartbeatTimeoutS = 0.5;
-  static constexpr std::size_t kCapacity = 64;
+  // timed entries waiting: the seed's customized-gait example queues its steps and then 75 timed
+  // "heartbeats" (each a new life_count repeating the last step), about 90 in all; 256 leaves room
+  static constexpr std::size_t kCapacity = 256;
 
   enum class Receipt {
     Heartbeat,  // same life_count: refreshes the timer only

@@ -86,7 +86,12 @@ bool HighLevelMachine::take_input(const TimedCommand& input) {
     case CommandQueue::Receipt::RunsNow:
     case CommandQueue::Receipt::Queued: counters.new_commands.fetch_add(1, std::memory_order_relaxed); return true;
     case CommandQueue::Receipt::Rejected: counters.rejected_non_finite.fetch_add(1, std::memory_order_relaxed); break;
-    case CommandQueue::Receipt::QueueFull: counters.queue_full.fetch_add(1, std::memory_order_relaxed); break;
+    case CommandQueue::Receipt::QueueFull:
+      // the client sees it in the response (BAN_TRANS) and its interface's log, not only in a count
+      counters.queue_full.fetch_add(1, std::memory_order_relaxed);
+      refuse(input.command, "the command queue is full (timed entries waiting): the command is dropped", nullptr,
+             SwitchStatus::BanTransition, input.source);
+      break;
     case CommandQueue::Receipt::Dropped: clients_.motion_dropped(input.source, input.command); break;
     case CommandQueue::Receipt::Heartbeat:
     case CommandQueue::Receipt::Ignored: break;

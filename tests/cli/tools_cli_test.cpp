@@ -2,6 +2,7 @@
 // telemetry CSV and its plots, the viewer under a virtual display, and their errors.
 #include <gtest/gtest.h>
 
+#include <fstream>
 #include <regex>
 #include <sstream>
 
@@ -72,7 +73,11 @@ TEST(ToolsCli, PacedRecordingKeepsOneFramePerPeriodOfRobotTime) {
 TEST(ToolsCli, TelemetryRowsAtTheRateAndPlotsFromThem) {
   test::ScratchDir dir;
   const std::string csv = dir / "stand.csv";
-  const auto run = run_command(sim("--speed max --duration 3 --telemetry " + quoted(csv) + " --telemetry-rate 50"));
+  // the MC stands the robot up by itself (the default lies, as after power-on)
+  const std::string config = dir / "stand.yaml";
+  std::ofstream(config) << "mc:\n  startup: stand\n";
+  const auto run = run_command(sim("--speed max --duration 3 --config " + quoted(config) + " --telemetry " +
+                                   quoted(csv) + " --telemetry-rate 50"));
   ASSERT_EQ(run.exit_code, 0) << run.output;
   EXPECT_NE(run.output.find("telemetry: 150 rows written to " + csv), std::string::npos) << run.output;
 

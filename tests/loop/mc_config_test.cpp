@@ -37,7 +37,7 @@ TEST(McConfig, DefaultsFindTheProjectModel) {
   const McConfig config = default_config();
   EXPECT_NE(config.robot.model_path.find("cyberdog2.xml"), std::string::npos);
   EXPECT_DOUBLE_EQ(config.loop_period_s, 0.002);
-  EXPECT_EQ(config.startup, Startup::Stand);
+  EXPECT_EQ(config.startup, Startup::Off) << "as the robot powers on: lying, motors off";
 }
 
 TEST(McConfig, FileOverridesDefaultsAndResolvesRelativeModelPaths) {

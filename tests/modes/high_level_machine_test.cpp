@@ -3,6 +3,9 @@
 
 #include <gtest/gtest.h>
 
+#include <optional>
+#include <string>
+
 #include "modes/scripted_machine.hpp"
 
 namespace cerebellum {
@@ -17,6 +20,38 @@ TEST(HighLevelMachine, StartsInTheStartupModeAndRunsIt) {
   EXPECT_EQ(command.kp[0], 12.0);
   EXPECT_EQ(m.machine.status().mode, 12);
   EXPECT_EQ(m.recovery.entered, 1);
+}
+
+TEST(HighLevelMachine, ACommandBeyondTheFullQueueIsRefusedInTheResponseAndNoted) {
+  Machine m(ModeId::RecoveryStand);
+  m.tick();
+  // timed pose commands, handed over as fast as the inbox takes them (8 a tick)
+  const int sent = static_cast<int>(CommandQueue::kCapacity) + 3;
+  for (int i = 1; i <= sent; ++i) {
+    m.machine.submit(cmd(ModeId::PoseControl, 0, i % 250 + 1, 1000), m.state.time_s);
+    if (i % 8 == 0) m.tick();
+  }
+  m.tick();
+  EXPECT_GE(m.machine.counters().queue_full.load(), 1u);
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::BanTransition);
+  bool noted = false;
+  while (const std::optional<ClientNote> note = m.machine.refusals().try_pop()) {
+    noted = noted || std::string(note->reason).find("queue is full") != std::string::npos;
+  }
+  EXPECT_TRUE(noted);
+}
+
+TEST(HighLevelMachine, TheQueueHoldsTheSeedsCustomizedGaitExample) {
+  // its steps, then 75 timed "heartbeats" (new life_counts): about 90 timed entries
+  Machine m(ModeId::RecoveryStand);
+  m.tick();
+  for (int i = 1; i <= 90; ++i) {
+    m.machine.submit(cmd(ModeId::PoseControl, 0, i, 200), m.state.time_s);
+    if (i % 8 == 0) m.tick();
+  }
+  m.tick();
+  EXPECT_EQ(m.machine.counters().queue_full.load(), 0u);
+  EXPECT_EQ(m.machine.counters().new_commands.load(), 90u);
 }
 
 TEST(HighLevelMachine, ContactPlanIsTheRunningModes) {

@@ -189,7 +189,7 @@ void LcmHighLevelAdapter::log_counts_once_per_second() {
   append_count(text, now.truncated - before.truncated, "truncated");
   append_count(text, now.oversized - before.oversized, "oversized");
   append_count(text, now.non_finite - before.non_finite, "with NaN/Inf");
-  append_count(text, now.queue_full - before.queue_full, "timed commands beyond the 64-entry queue");
+  append_count(text, now.queue_full - before.queue_full, "timed commands beyond the full queue");
   append_count(text, now.ring_overflow - before.ring_overflow, "arriving faster than the loop takes them");
   append_count(text, now.wrong_thread - before.wrong_thread,
                "handed over by a second thread (a defect: one thread per client)");

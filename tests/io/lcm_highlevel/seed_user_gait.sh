@@ -36,4 +36,12 @@ from=1
 expect "the uploaded gait runs as a motion (62/110)" '^mode 62 gait 110 bar [1-9][0-9]? switch 1 '
 expect "it nearly ends (62/110, bar >= 95)" '^mode 62 gait 110 bar 9[5-9] '
 expect "then the lie-down (7/1)" '^mode 7 gait 1 '
+# the example's 75 timed "heartbeats" (new life_counts repeating the last step) all fit the queue
+if grep -Eq "beyond the .*queue|queue is full" "$work/sim.log"; then
+  echo "WRONG: the MC dropped commands of the example beyond its queue:"
+  grep -E "beyond the .*queue|queue is full" "$work/sim.log" | head -3
+  fail=1
+else
+  echo "seen: no command dropped beyond the queue"
+fi
 exit "$fail"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The seed's motor SDK example (section 3.4 of shared/seeds/000_*.txt), taken from the seed at test
 # time, compiled unmodified against our custom_interface.hpp and libcyber_dog_motor_sdk the way a
-# user's build would, and run against `cerebellum sim --speed 1` (damper at start, motor SDK on).
+# user's build would, and run against a plain `cerebellum sim --speed 1` (no configuration: the
+# robot lies with the motors off, as after power-on, and the motor SDK is on).
 # The example activates (2 s), lays the legs out (3 s), stands up (3 s) and holds until Ctrl-C;
 # the simulation's ground truth (channel sim_truth) shows that it stood. Run inside
 # scripts/netns_run.sh.
@@ -36,10 +37,9 @@ if ! "$cxx" -std=c++17 -fno-strict-aliasing "${flags[@]}" "$example" -o "$work/s
 fi
 echo "compiled unmodified"
 
-printf 'mc:\n  startup: damper\nmotor_sdk:\n  enabled: true\n' > "$work/sim.yaml"
 # 12 s of robot time at real-time speed: start-up, activation 2 s, 3 s to lying, 3 s up, holding
 start_truth_watch "$work/truth.log" "$python_types"
-start_sim "$work/sim.log" "$cerebellum" sim --speed 1 --duration 12 --config "$work/sim.yaml"
+start_sim "$work/sim.log" "$cerebellum" sim --speed 1 --duration 12
 sim=$sim_pid
 "$work/seed_example_motor_ctrl" > "$work/example.log" 2>&1 &
 example=$!

@@ -82,7 +82,12 @@ class SimControlLockstep : public ::testing::Test {
     results_.push_back(*result);
   }
 
-  McConfig config_ = default_config();
+  // the MC stands the robot up by itself: the pushes shove a standing robot
+  McConfig config_ = [] {
+    McConfig config = default_config();
+    config.startup = Startup::Stand;
+    return config;
+  }();
   Mc mc_;
   LinkFaultSet links_;
   std::FILE* log_;

@@ -43,6 +43,7 @@ struct TruthRun {
 
 TruthRun run_standing(double rate_hz, double seconds) {
   McConfig config = default_config();
+  config.startup = Startup::Stand;  // the MC stands the robot up by itself
   config.sim_truth.rate_hz = rate_hz;
   Mc mc = make_simulated_mc(config);
   Subscriber subscriber(config.highlevel.odometry_url);

@@ -12,8 +12,15 @@
 
 namespace cerebellum::testing {
 
+// the MC's defaults, standing the robot up by itself at start (the AlienGo tests start standing)
+inline McConfig standing_config() {
+  McConfig config = default_config();
+  config.startup = Startup::Stand;
+  return config;
+}
+
 struct AlienGoSim {
-  explicit AlienGoSim(const McConfig& config = default_config()) : mc(make_simulated_mc(config)) {}
+  explicit AlienGoSim(const McConfig& config = standing_config()) : mc(make_simulated_mc(config)) {}
 
   double time_s() { return mc.backend().time_s(); }
   const RobotState& state() { return mc.loop().last_cycle().state; }

@@ -19,6 +19,7 @@
 #include <vector>
 
 #include "loop/simulated_robot.hpp"
+#include "io/udp_aliengo/aliengo_sim.hpp"
 #include "io/udp_aliengo/udp_aliengo_adapter.hpp"
 #include "unitree_legged_sdk/comm.h"
 
@@ -68,7 +69,7 @@ std::vector<std::uint8_t> high_cmd_bytes(int mode) {
 
 struct Endpoint {
   Endpoint()
-      : mc(make_simulated_mc(default_config())),
+      : mc(make_simulated_mc(testing::standing_config())),
         adapter(mc.client_port(HighLevelSource::AlienGoUdp), mc.aliengo_source().inbox(), config(), stderr) {
     mc.loop().add_observer(adapter);
     run(3.0);  // the MC stands up by itself

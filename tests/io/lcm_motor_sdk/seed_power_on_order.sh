@@ -1,0 +1,91 @@
+#!/usr/bin/env bash
+# Power-on as on the robot: a plain `cerebellum sim` (no configuration) lies with the motors off,
+# and whichever client comes first takes the robot; the second is refused as the robot refuses it,
+# and the MC's log says why. Two runs, each on a fresh plain simulation:
+#   1. the seed's motor SDK example (section 3.4) first: it stands the robot (sim_truth), then a
+#      high-level stand (mode 12) is refused (BAN_TRANS, "a low-level client holds the robot");
+#   2. a high-level stand first (mode 12): the robot stands, then the seed's example is refused
+#      (the MC logs "motor_ctrl refused", the motors stay with the high-level MC).
+# Run inside scripts/netns_run.sh.
+#   seed_power_on_order.sh <cerebellum> <work dir> <seeds dir> <c++ compiler>
+#                          <include dirs, ':'-separated> <libcyber_dog_motor_sdk.so>
+#                          <generated python types dir>
+set -u
+cerebellum=$1
+work=$2
+seeds=$3
+cxx=$4
+include_dirs=$5
+sdk_library=$6
+python_types=$7
+source "$(dirname "$0")/../../seed_support.sh"
+seed=$(seed_file "$seeds") || exit $?
+rm -rf "$work" && mkdir -p "$work"
+example="$work/seed_example_motor_ctrl.cpp"
+extract_code_block "$seed" '^### 3\.4' '^```c\+\+' "$example" "custom_interface.hpp"
+flags=()
+IFS=: read -r -a dirs <<< "$include_dirs"
+for dir in "${dirs[@]}"; do [[ -n "$dir" ]] && flags+=("-I$dir"); done
+lcm_libs=$(pkg-config --libs lcm 2>/dev/null || echo -llcm)
+# shellcheck disable=SC2086
+if ! "$cxx" -std=c++17 -fno-strict-aliasing "${flags[@]}" "$example" -o "$work/seed_example_motor_ctrl" \
+     "$sdk_library" -Wl,-rpath,"$(dirname "$sdk_library")" $lcm_libs -pthread > "$work/compile.log" 2>&1; then
+  echo "FAILED: the seed's example does not compile:"; cat "$work/compile.log"; exit 1
+fi
+fail=0
+
+echo "=== 1. the motor SDK example first, on a plain cerebellum sim"
+start_truth_watch "$work/truth1.log" "$python_types"
+start_sim "$work/sim1.log" "$cerebellum" sim --speed 1 --duration 12
+sim=$sim_pid
+"$work/seed_example_motor_ctrl" > "$work/example1.log" 2>&1 &
+example=$!
+sleep 4  # the example has activated (2 s) and is laying the legs out
+"$cerebellum" cmd stand --timeout 3 --hold 0 > "$work/cmd1.log" 2>&1
+cmd_status=$?
+wait "$sim"
+kill -INT "$example" 2>/dev/null
+wait "$example"
+wait "$truth_pid"
+grep -v '^    ' "$work/sim1.log" | grep -E "startup|motor sdk|refused" | head -8
+cat "$work/cmd1.log"
+[[ $cmd_status -ne 0 ]] || { echo "WRONG: the high-level stand was taken while the motor SDK held the robot"; fail=1; }
+grep -q "refused mode 12 .*a low-level client holds the robot" "$work/sim1.log" ||
+  { echo "WRONG: the MC's log does not say why the stand was refused"; fail=1; }
+grep -q "^motor sdk: motor mode yes" "$work/sim1.log" || { echo "WRONG: the motor SDK never held the robot"; fail=1; }
+height=$(truth_value "$work/truth1.log" final_height_m)
+if [[ -z "$height" ]] || ! awk -v h="$height" 'BEGIN {exit !(h >= 0.2)}'; then
+  echo "WRONG: the seed's example did not stand the robot (final height '$height' m)"; fail=1
+else
+  echo "seen: the seed's example stood the robot ($height m, sim_truth); the high-level stand was refused"
+fi
+
+echo "=== 2. a high-level stand first, on a plain cerebellum sim"
+start_truth_watch "$work/truth2.log" "$python_types"
+start_sim "$work/sim2.log" "$cerebellum" sim --speed 1 --duration 12
+sim=$sim_pid
+# the stand keeps its heartbeat until stopped: a silent client would be laid down (PureDamper),
+# from where the motor SDK may take over, as on the robot
+"$cerebellum" cmd stand --timeout 8 > "$work/cmd2.log" 2>&1 &
+stand=$!
+sleep 4  # the stand is done (the recovery stand takes about 2.5 s)
+"$work/seed_example_motor_ctrl" > "$work/example2.log" 2>&1 &
+example=$!
+wait "$sim"
+kill -INT "$example" "$stand" 2>/dev/null
+wait "$example"
+wait "$stand"
+wait "$truth_pid"
+grep -v '^    ' "$work/sim2.log" | grep -E "motor sdk|refused" | head -8
+grep -q "motor_ctrl refused: .* has the robot" "$work/sim2.log" ||
+  { echo "WRONG: the MC's log does not say why the motor SDK was refused"; fail=1; }
+if grep -q "^motor sdk: motor mode yes" "$work/sim2.log"; then
+  echo "WRONG: the motor SDK took the robot from the standing high-level MC"; fail=1
+fi
+height=$(truth_value "$work/truth2.log" final_height_m)
+if [[ -z "$height" ]] || ! awk -v h="$height" 'BEGIN {exit !(h >= 0.2)}'; then
+  echo "WRONG: the robot is not standing at the end (final height '$height' m)"; fail=1
+else
+  echo "seen: the high-level MC stood the robot ($height m, sim_truth); the motor SDK was refused"
+fi
+exit "$fail"
