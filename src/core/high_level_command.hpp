@@ -121,6 +121,14 @@ struct HighLevelStatus {
   JointArray<std::uint32_t> motor_faults{};  // MotorFault bits per motor, as the drivers report them
 };
 
+// a frame in the odometry's world frame: its origin (x, y, z) and heading (yaw about z), as the
+// AlienGo sport mode fixes it at the instant it starts (seed 004 section 2.3: origin at the body's
+// centre, x forward, y left, z up)
+struct SportFrame {
+  std::array<double, 3> origin{};
+  double yaw_rad = 0.0;
+};
+
 // what the high-level state machine reports after each tick, in the cycle record (observers read
 // it there, never the machine): the response fields, the command its running mode was entered or
 // last updated with, and the client holding the robot (none before the first command)
@@ -131,6 +139,9 @@ struct HighLevelReport {
   // the AlienGo client's sport mode as HighState reports it: its session's mode once the MC runs
   // what that mode was translated into
   int aliengo_mode = 0;
+  // the AlienGo client's sport frame, set when its session started: HighState.position and mode
+  // 3's targets are in it (before the first session: the odometry's own frame)
+  SportFrame aliengo_frame;
 };
 
 }  // namespace cerebellum

@@ -13,13 +13,16 @@ namespace {
 
 using M = AlienGoMode;
 
-// the vendor's legal moves (docs/aliengo-udp.md); staying in a mode is always legal and any mode
-// may go to damping
+// the vendor's legal moves (docs/aliengo-udp.md): the moves its walk example makes and those of the
+// seed's documented sequences (sit down 2 -> 1 -> 6 -> 5 -> 7, stand up 7 -> 5 -> 6, unlock walking
+// 6 -> 1 -> 2, its table's "previous mode" of 6: mode 1); staying in a mode is always legal and any
+// mode may go to damping
 bool legal_move(M from, M to) {
   if (from == to || to == M::Damping) return true;
   switch (from) {
     case M::Idle: return to == M::ForceStand || to == M::WalkVelocity || to == M::WalkPosition;
-    case M::ForceStand: return to == M::Idle || to == M::WalkVelocity || to == M::WalkPosition || to == M::StandDown;
+    case M::ForceStand:
+      return to == M::Idle || to == M::WalkVelocity || to == M::WalkPosition || to == M::StandDown || to == M::StandUp;
     case M::WalkVelocity: return to == M::Idle || to == M::ForceStand;  // 1: only to stop the stair gait
     case M::WalkPosition: return to == M::Idle;
     case M::StandDown: return to == M::StandUp;
@@ -69,6 +72,8 @@ void AlienGoSession::start(const RobotState& state) {
   silenced_ = false;
   origin_.position = state.position_world.head<2>();
   origin_.yaw_rad = state.rpy.z();
+  frame_.origin = {state.position_world.x(), state.position_world.y(), state.position_world.z()};
+  frame_.yaw_rad = origin_.yaw_rad;
 }
 
 HighLevelCommand AlienGoSession::stand_command() const {

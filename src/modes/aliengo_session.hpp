@@ -52,6 +52,8 @@ class AlienGoSession {
   bool active() const { return active_; }
   // the AlienGo mode echoed in HighState
   int mode() const { return static_cast<int>(mode_); }
+  // the sport frame fixed when the session started (HighState.position is reported in it)
+  const SportFrame& frame() const { return frame_; }
 
  private:
   void start(const RobotState& state);
@@ -64,6 +66,7 @@ class AlienGoSession {
   AlienGoMode mode_ = AlienGoMode::Idle;
   bool stairs_walking_ = false;  // the last walk was the stair gait: mode 0 does not stop it
   Pose2d origin_;                // the sport frame in the world
+  SportFrame frame_;             // the same, with the trunk's height at start (what HighState reports)
   Pose2d target_world_;
   WalkToPosition walk_to_position_;
   double last_command_s_ = 0.0;

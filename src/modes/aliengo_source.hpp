@@ -23,7 +23,10 @@ class AlienGoSource final : public SourceStage {
 
   // loop thread
   std::size_t step(const RobotState& state, const HighLevelStatus& status, Commands& out) override;
-  void report(HighLevelReport& report) const override { report.aliengo_mode = reported_mode_; }
+  void report(HighLevelReport& report) const override {
+    report.aliengo_mode = reported_mode_;
+    report.aliengo_frame = session_.frame();
+  }
   // loop thread (tests, the stage itself): the client's session
   const AlienGoSession& session() const { return session_; }
 

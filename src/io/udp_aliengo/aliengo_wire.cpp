@@ -90,7 +90,7 @@ void encode_high_cmd(const AlienGoCommand& command, std::uint8_t (&out)[kHighCmd
   sdk::store_crc(out, sizeof out);
 }
 
-AlienGoFeedback make_feedback(const RobotState& state, int mode) {
+AlienGoFeedback make_feedback(const RobotState& state, int mode, const SportFrame& frame) {
   AlienGoFeedback f;
   f.mode = mode;
   f.quaternion_wxyz = {state.orientation.w(), state.orientation.x(), state.orientation.y(), state.orientation.z()};
@@ -101,7 +101,12 @@ AlienGoFeedback make_feedback(const RobotState& state, int mode) {
   // the simulated IMU has no thermal model: the coolest motor, the body's inside temperature
   f.temperature_c =
       static_cast<int>(std::lround(*std::min_element(state.temperature_c.begin(), state.temperature_c.end())));
-  f.position = state.position_world;
+  // the odometry (it drifts, as on the robot) in the sport frame: from its origin, turned by its yaw
+  const Eigen::Vector3d from_origin =
+      state.position_world - Eigen::Vector3d(frame.origin[0], frame.origin[1], frame.origin[2]);
+  const double c = std::cos(frame.yaw_rad), s = std::sin(frame.yaw_rad);
+  f.position = Eigen::Vector3d(c * from_origin.x() + s * from_origin.y(), -s * from_origin.x() + c * from_origin.y(),
+                               from_origin.z());
   f.velocity = state.velocity_body;
   f.yaw_speed = state.omega_world.z();
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {

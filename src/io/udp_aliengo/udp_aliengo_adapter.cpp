@@ -68,7 +68,7 @@ UdpAliengoAdapter::~UdpAliengoAdapter() {
 }
 
 void UdpAliengoAdapter::on_cycle(const CycleRecord& record) {
-  snapshots_.try_push(Snapshot{record.state, record.high_level.aliengo_mode});
+  snapshots_.try_push(Snapshot{record.state, record.high_level.aliengo_mode, record.high_level.aliengo_frame});
 }
 
 void UdpAliengoAdapter::take_newest_snapshot() {
@@ -138,7 +138,7 @@ void UdpAliengoAdapter::log_refusals(double now_s) {
 
 void UdpAliengoAdapter::answer(const sockaddr_in& sender) {
   std::uint8_t frame[kHighStateBytes];
-  encode_high_state(make_feedback(newest_.state, newest_.aliengo_mode), frame);
+  encode_high_state(make_feedback(newest_.state, newest_.aliengo_mode, newest_.aliengo_frame), frame);
   const ssize_t sent =
       ::sendto(socket_, frame, sizeof frame, 0, reinterpret_cast<const sockaddr*>(&sender), sizeof sender);
   (sent == static_cast<ssize_t>(sizeof frame) ? counts_.states_sent : counts_.send_errors).add();

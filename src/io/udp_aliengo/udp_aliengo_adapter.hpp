@@ -68,7 +68,8 @@ class UdpAliengoAdapter final : public CycleObserver {
  private:
   struct Snapshot {
     RobotState state;
-    int aliengo_mode = 0;  // HighState.mode
+    int aliengo_mode = 0;      // HighState.mode
+    SportFrame aliengo_frame;  // HighState.position is in it
   };
 
   void step();

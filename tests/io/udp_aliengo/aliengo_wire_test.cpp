@@ -172,5 +172,40 @@ TEST(AlienGoWire, RefusesShortLongCorruptedLowLevelAndNonFiniteFrames) {
   }
 }
 
+// the seed's section 1.3 snippet writes footRaiseHeight, its table dFootRaiseHeight: both compile,
+// name the same 4 bytes at the reference's offset 13, and the struct keeps its 113 bytes
+static_assert(sizeof(sdk::HighCmd) == 113);
+static_assert(offsetof(sdk::HighCmd, footRaiseHeight) == 13 && offsetof(sdk::HighCmd, dFootRaiseHeight) == 13);
+static_assert(offsetof(sdk::HighCmd, dBodyHeight) == 17);
+
+TEST(AlienGoWire, TheSeedsSnippetWithFootRaiseHeightCompilesAndSetsTheSameFieldAsDFootRaiseHeight) {
+  // section 1.3, as the seed writes it (InitCmdData sets only levelFlag)
+#pragma GCC diagnostic push
+#pragma GCC diagnostic ignored "-Wmissing-field-initializers"  // the seed's "= {0}"
+  sdk::HighCmd mycmd = {0};
+#pragma GCC diagnostic pop
+  mycmd.levelFlag = sdk::HIGHLEVEL;
+  mycmd.mode = 2;
+  mycmd.gaitType = 1;
+  mycmd.velocity[0] = 0.2f;
+  mycmd.footRaiseHeight = 0.1;
+  std::uint8_t frame[sizeof(sdk::HighCmd)];
+  std::memcpy(frame, &mycmd, sizeof frame);
+  sdk::store_crc(frame, sizeof frame);
+  AlienGoCommand decoded;
+  ASSERT_EQ(decode_high_cmd(frame, sizeof frame, decoded), AlienGoDecode::Ok);
+  EXPECT_FLOAT_EQ(decoded.foot_raise_m, 0.1f);
+  EXPECT_FLOAT_EQ(decoded.velocity[0], 0.2f);
+  // the table's name: the same bytes
+  mycmd.dFootRaiseHeight = -0.02f;
+  std::memcpy(frame, &mycmd, sizeof frame);
+  sdk::store_crc(frame, sizeof frame);
+  ASSERT_EQ(decode_high_cmd(frame, sizeof frame, decoded), AlienGoDecode::Ok);
+  EXPECT_FLOAT_EQ(decoded.foot_raise_m, -0.02f);
+  float at_13;
+  std::memcpy(&at_13, frame + 13, sizeof at_13);
+  EXPECT_FLOAT_EQ(at_13, -0.02f);
+}
+
 }  // namespace
 }  // namespace cerebellum

@@ -44,7 +44,12 @@ struct HighCmd {
   uint8_t mode;
   uint8_t gaitType;    // 0 trot, 1 trot running, 2 climb stairs
   uint8_t speedLevel;  // 0 low, 1 medium, 2 high (mode 3)
-  float dFootRaiseHeight;
+  // the seed's table spells it dFootRaiseHeight, its section 1.3 snippet footRaiseHeight: both
+  // names are the same 4 bytes at offset 13 (an anonymous union: the layout does not change)
+  union {
+    float dFootRaiseHeight;
+    float footRaiseHeight;
+  };
   float dBodyHeight;
   float position[2];
   float rpy[3];
@@ -82,11 +87,11 @@ static_assert(sizeof(HighCmd) == 113, "HighCmd is 113 bytes");
 static_assert(sizeof(HighState) == 244, "HighState is 244 bytes");
 static_assert(offsetof(HighCmd, mode) == 10 && offsetof(HighCmd, gaitType) == 11 &&
                   offsetof(HighCmd, speedLevel) == 12 && offsetof(HighCmd, dFootRaiseHeight) == 13 &&
-                  offsetof(HighCmd, dBodyHeight) == 17 && offsetof(HighCmd, position) == 21 &&
-                  offsetof(HighCmd, rpy) == 29 && offsetof(HighCmd, velocity) == 41 &&
-                  offsetof(HighCmd, yawSpeed) == 49 && offsetof(HighCmd, led) == 53 &&
-                  offsetof(HighCmd, wirelessRemote) == 65 && offsetof(HighCmd, reserve) == 105 &&
-                  offsetof(HighCmd, crc) == 109,
+                  offsetof(HighCmd, footRaiseHeight) == 13 && offsetof(HighCmd, dBodyHeight) == 17 &&
+                  offsetof(HighCmd, position) == 21 && offsetof(HighCmd, rpy) == 29 &&
+                  offsetof(HighCmd, velocity) == 41 && offsetof(HighCmd, yawSpeed) == 49 &&
+                  offsetof(HighCmd, led) == 53 && offsetof(HighCmd, wirelessRemote) == 65 &&
+                  offsetof(HighCmd, reserve) == 105 && offsetof(HighCmd, crc) == 109,
               "HighCmd offsets of the reference");
 static_assert(offsetof(HighState, mode) == 10 && offsetof(HighState, imu) == 11 &&
                   offsetof(HighState, position) == 64 && offsetof(HighState, velocity) == 76 &&
