@@ -32,6 +32,10 @@ std::uint32_t motor_driver_faults(double temperature_c, double bus_voltage_v, st
   return faults;
 }
 
+std::uint32_t motor_over_speed(double joint_velocity_rad_s) {
+  return std::abs(joint_velocity_rad_s) > robot::kNoLoadSpeedRadS ? kMotorOverSpeed : kMotorOk;
+}
+
 MotorThermalModel::MotorThermalModel(const MotorThermalParameters& parameters)
     : parameters_(parameters), temperature_c_(parameters.ambient_c) {}
 

@@ -38,6 +38,9 @@ struct MotorThermalParameters {
 // once the voltage is back inside by the hysteresis: a sagging pack whose voltage recovers as soon
 // as the motors stop does not switch them on and off every step
 std::uint32_t motor_driver_faults(double temperature_c, double bus_voltage_v, std::uint32_t previous = kMotorOk);
+// kMotorOverSpeed when the joint turns faster than the motor's no-load speed (it is driven from
+// outside: a fall, an impact), else kMotorOk
+std::uint32_t motor_over_speed(double joint_velocity_rad_s);
 
 // copper loss heats the winding, conduction to ambient cools it
 class MotorThermalModel {

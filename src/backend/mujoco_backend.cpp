@@ -102,6 +102,10 @@ SensorFrame MujocoBackend::read() {
     frame.temperature_c[i] = thermal_[i].temperature_c();
   }
   frame.motor_faults = motor_faults_;
+  frame.driver_mode = driver_mode_;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    frame.motor_faults[i] |= motor_over_speed(data_->qvel[dof_address_[i]]);
+  }
   frame.battery = battery_.reading();
   for (int k = 0; k < 4; ++k) frame.imu_quat[k] = data_->sensordata[imu_quat_address_ + k];
   for (int k = 0; k < 3; ++k) {
@@ -122,6 +126,10 @@ void MujocoBackend::apply_motor_drivers() {
     // a driver in error has stopped its motor
     const bool driving = std::isfinite(requested) && (motor_faults_[i] & kMotorErrorBits) == 0;
     const double torque = driving ? limit_motor_torque(requested, qd, config_.motor_limits) : 0.0;
+    // a driver told nothing (no gain, no torque: the MC's passive command), or stopped on an error,
+    // is not in motor mode
+    const bool commanded = command_.kp[i] != 0.0 || command_.kd[i] != 0.0 || command_.tau_ff[i] != 0.0;
+    driver_mode_[i] = driving && commanded ? MotorDriverMode::Motor : MotorDriverMode::Reset;
     applied_torque_[i] = torque;
     data_->ctrl[actuator_id_[i]] = torque;
   }

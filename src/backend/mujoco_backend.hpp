@@ -91,6 +91,7 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   int imu_gyro_address_ = -1;
   int imu_accel_address_ = -1;
   JointArray<double> applied_torque_{};
+  JointArray<MotorDriverMode> driver_mode_ = all_motor_mode();  // of the last physics step
   bool sensors_stale_ = false;
   std::vector<MotorThermalModel> thermal_;
   BatteryModel battery_;

@@ -9,6 +9,7 @@
 #include <optional>
 
 #include "core/joint_layout.hpp"
+#include "core/types.hpp"
 
 namespace cerebellum {
 
@@ -117,8 +118,9 @@ struct HighLevelStatus {
   int order_process_bar = 0;  // percent
   SwitchStatus switch_status = SwitchStatus::Done;
   int ori_error = 0;
-  int footpos_error = 0;                     // bit 3 * leg + axis
-  JointArray<std::uint32_t> motor_faults{};  // MotorFault bits per motor, as the drivers report them
+  int footpos_error = 0;                                       // bit 3 * leg + axis
+  JointArray<std::uint32_t> motor_faults{};                    // MotorFault bits per motor, as the drivers report them
+  JointArray<MotorDriverMode> driver_mode = all_motor_mode();  // each driver's mode (bits 30..31)
 };
 
 // a frame in the odometry's world frame: its origin (x, y, z) and heading (yaw about z), as the

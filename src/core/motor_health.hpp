@@ -21,7 +21,12 @@ enum MotorFault : std::uint32_t {
   kMotorEncoderLost = 1u << 6,  // the position sensor does not answer or is not calibrated
   kMotorOverload = 1u << 7,
   kMotorTemperatureWarning = 1u << 8,  // coil at or above the warning temperature (not an error)
+  kMotorOverSpeed = 1u << 9,  // turning faster than the motor's no-load speed (driven from outside; reported only)
 };
+
+// the mode a motor's driver is in (the seed's motor_error bits 30..31): reset while the MC does not
+// drive it (passive command, or stopped on an error), motor mode while it runs a command
+enum class MotorDriverMode : std::uint8_t { Reset = 0, Calibration = 1, Motor = 2, Brake = 3 };
 
 inline constexpr std::uint32_t kMotorErrorBits = kMotorDisconnected | kMotorOverTemperature | kMotorDriverFault |
                                                  kMotorUnderVoltage | kMotorOverVoltage | kMotorOverCurrent |
@@ -30,9 +35,9 @@ inline constexpr std::uint32_t kMotorWarningBits = kMotorTemperatureWarning;
 
 // "over-temperature, temperature warning": the names of the set bits, for people
 inline std::string motor_fault_names(std::uint32_t faults) {
-  static constexpr const char* kNames[] = {"disconnected",  "over-temperature", "driver fault",
-                                           "under-voltage", "over-voltage",     "over-current",
-                                           "encoder lost",  "overload",         "temperature warning"};
+  static constexpr const char* kNames[] = {"disconnected",        "over-temperature", "driver fault", "under-voltage",
+                                           "over-voltage",        "over-current",     "encoder lost", "overload",
+                                           "temperature warning", "over-speed"};
   std::string names;
   for (std::size_t bit = 0; bit < sizeof kNames / sizeof kNames[0]; ++bit) {
     if ((faults & (1u << bit)) == 0) continue;

@@ -18,7 +18,8 @@ struct RobotState {
   JointArray<double> qd{};
   JointArray<double> tau{};
   JointArray<double> temperature_c{};
-  JointArray<std::uint32_t> motor_faults{};  // MotorFault bits as the drivers report them
+  JointArray<std::uint32_t> motor_faults{};                    // MotorFault bits as the drivers report them
+  JointArray<MotorDriverMode> driver_mode = all_motor_mode();  // as the drivers report it
   BatteryReading battery;
   // trunk
   Eigen::Quaterniond orientation = Eigen::Quaterniond::Identity();  // body to world

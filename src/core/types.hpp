@@ -10,6 +10,13 @@
 namespace cerebellum {
 
 // what the robot's sensors say at one instant (SDK joint convention)
+// every driver in motor mode
+inline JointArray<MotorDriverMode> all_motor_mode() {
+  JointArray<MotorDriverMode> modes;
+  modes.fill(MotorDriverMode::Motor);
+  return modes;
+}
+
 struct SensorFrame {
   double time_s = 0.0;
   JointArray<double> q{};    // rad
@@ -20,6 +27,8 @@ struct SensorFrame {
   std::array<double, 3> imu_gyro{};                    // rad/s, body frame
   std::array<double, 3> imu_accel{};                   // m/s^2, body frame, includes gravity
   JointArray<std::uint32_t> motor_faults{};            // MotorFault bits per motor
+  // each driver's mode; a backend that cannot tell reports motor mode (the healthy running state)
+  JointArray<MotorDriverMode> driver_mode = all_motor_mode();
   BatteryReading battery;
 };
 

@@ -33,6 +33,7 @@ void KinematicEstimator::update(const SensorFrame& frame, const ContactPlan& /*p
   state.time_s = frame.time_s;
   // what the drivers and the battery report reaches the safety stage even when the sensors fail
   state.motor_faults = frame.motor_faults;
+  state.driver_mode = frame.driver_mode;
   state.battery = frame.battery;
   if (!sensor_frame_is_finite(frame)) {
     state.valid = false;

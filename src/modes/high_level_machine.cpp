@@ -240,6 +240,7 @@ void HighLevelMachine::update_status(const RobotState& state) {
     if (state.contact[leg] > 0.5) status_.contact |= 1 << leg;
   }
   status_.motor_faults = state.motor_faults;
+  status_.driver_mode = state.driver_mode;
   if (handed_over_) {
     // the MC commands nothing: no gait, no progress, no protective stop of its own; the body's
     // orientation is still watched so that a client sees a robot upside down

@@ -22,8 +22,8 @@ constexpr std::array<std::pair<std::uint32_t, std::uint32_t>, 9> kWordBits{{
 
 }  // namespace
 
-std::uint32_t motor_error_word(std::uint32_t motor_faults) {
-  std::uint32_t word = kMotorErrorWordHealthy;
+std::uint32_t motor_error_word(std::uint32_t motor_faults, MotorDriverMode mode) {
+  std::uint32_t word = static_cast<std::uint32_t>(mode) << 30;
   for (const auto& [fault, bit] : kWordBits) {
     if (motor_faults & fault) word |= bit;
   }

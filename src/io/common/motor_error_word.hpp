@@ -14,7 +14,8 @@ inline constexpr std::uint32_t kMotorErrorWordHealthy = 0x80000000u;
 // the bits a client tests for an error or a warning (the SDK example's mask)
 inline constexpr std::uint32_t kMotorErrorWordFaultMask = 0x3FFFFFFFu;
 
-std::uint32_t motor_error_word(std::uint32_t motor_faults);
+// the driver's mode in bits 30..31 (the seed: 0 reset, 1 calibration, 2 motor mode, 3 brake)
+std::uint32_t motor_error_word(std::uint32_t motor_faults, MotorDriverMode mode);
 // back to MotorFault bits (the client verbs and tests read the wire with it)
 std::uint32_t motor_faults_from_word(std::uint32_t word);
 

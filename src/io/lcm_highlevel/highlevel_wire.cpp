@@ -95,7 +95,7 @@ robot_control_response_lcmt make_response(const HighLevelStatus& status) {
   message.ori_error = static_cast<std::int8_t>(status.ori_error);
   message.footpos_error = static_cast<std::int16_t>(status.footpos_error);
   for (std::size_t i = 0; i < status.motor_faults.size(); ++i) {
-    message.motor_error[i] = static_cast<std::int32_t>(motor_error_word(status.motor_faults[i]));
+    message.motor_error[i] = static_cast<std::int32_t>(motor_error_word(status.motor_faults[i], status.driver_mode[i]));
   }
   return message;
 }

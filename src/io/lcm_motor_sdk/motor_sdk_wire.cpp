@@ -67,7 +67,7 @@ spi_data_t make_spi_data(const RobotState& state) {
     message.tmp_knee[leg] = tenths_of_degree(state.temperature_c[knee]);
   }
   for (std::size_t i = 0; i < kNumJoints; ++i) {
-    message.flags[i] = static_cast<std::int32_t>(motor_error_word(state.motor_faults[i]));
+    message.flags[i] = static_cast<std::int32_t>(motor_error_word(state.motor_faults[i], state.driver_mode[i]));
   }
   return message;
 }

@@ -33,10 +33,12 @@ std::uint32_t byte_of(double value) {
 
 }  // namespace
 
-std::int32_t shm_joint_state_flags(double temperature_c, std::uint32_t motor_faults, double bus_voltage_v) {
+std::int32_t shm_joint_state_flags(double temperature_c, std::uint32_t motor_faults, double bus_voltage_v,
+                                   MotorDriverMode driver_mode) {
   std::uint32_t flags = (byte_of(temperature_c + JOINT_STATE_TEMPERATURE_OFFSET_C) << JOINT_STATE_TEMPERATURE_SHIFT) |
                         (byte_of(bus_voltage_v) << JOINT_STATE_BUS_VOLTAGE_SHIFT);
-  if ((motor_faults & kMotorErrorBits) == 0) flags |= JOINT_STATE_ENABLED;
+  if ((motor_faults & kMotorErrorBits) == 0 && driver_mode == MotorDriverMode::Motor) flags |= JOINT_STATE_ENABLED;
+  if (motor_faults & kMotorOverSpeed) flags |= JOINT_STATE_OVER_SPEED;
   if (motor_faults & kMotorOverVoltage) flags |= JOINT_STATE_OVER_VOLTAGE;
   if (motor_faults & kMotorOverCurrent) flags |= JOINT_STATE_OVER_CURRENT;
   if (motor_faults & kMotorOverTemperature) flags |= JOINT_STATE_OVER_TEMPERATURE;
@@ -51,7 +53,8 @@ void encode_shm_legs(const SensorFrame& frame, leg_state_t (&legs)[kNumLegs]) {
     for (std::size_t joint = 0; joint < kJointsPerLeg; ++joint) {
       const std::size_t i = joint_index(leg, joint);
       joint_state_t& out = joint_in(legs[leg], joint);
-      out.flags = shm_joint_state_flags(frame.temperature_c[i], frame.motor_faults[i], bus_voltage_v);
+      out.flags =
+          shm_joint_state_flags(frame.temperature_c[i], frame.motor_faults[i], bus_voltage_v, frame.driver_mode[i]);
       out.p = static_cast<float>(frame.q[i]);
       out.v = static_cast<float>(frame.qd[i]);
       out.t = static_cast<float>(frame.tau[i]);

@@ -16,7 +16,9 @@ inline constexpr double kShmNominalBusVoltageV = 24.0;
 // bit0 enabled (cleared while the motor's driver is stopped by an error), bits 1..5 the faults
 // lowlevel.h names (MotorFault bits without an own flag show only as "not enabled"), bits 8..15
 // temperature + 40 (clamped to -40..215 deg C), bits 16..23 bus voltage (whole volts, 0..255)
-std::int32_t shm_joint_state_flags(double temperature_c, std::uint32_t motor_faults, double bus_voltage_v);
+// driver_mode: bit 0 (enabled) only in motor mode
+std::int32_t shm_joint_state_flags(double temperature_c, std::uint32_t motor_faults, double bus_voltage_v,
+                                   MotorDriverMode driver_mode = MotorDriverMode::Motor);
 
 // state.legs of one frame
 void encode_shm_legs(const SensorFrame& frame, leg_state_t (&legs)[kNumLegs]);

@@ -7,26 +7,36 @@
 namespace cerebellum {
 namespace {
 
-TEST(MotorErrorWord, AHealthyMotorReadsMotorModeAndNoBits) { EXPECT_EQ(motor_error_word(kMotorOk), 0x80000000u); }
+TEST(MotorErrorWord, AHealthyMotorReadsMotorModeAndNoBits) {
+  EXPECT_EQ(motor_error_word(kMotorOk, MotorDriverMode::Motor), 0x80000000u);
+}
+
+TEST(MotorErrorWord, TheDriversModeIsInBitsThirtyAndThirtyOne) {
+  // the seed: 0 reset, 1 calibration, 2 motor mode, 3 brake
+  EXPECT_EQ(motor_error_word(kMotorOk, MotorDriverMode::Reset), 0x00000000u);
+  EXPECT_EQ(motor_error_word(kMotorOk, MotorDriverMode::Calibration), 0x40000000u);
+  EXPECT_EQ(motor_error_word(kMotorOk, MotorDriverMode::Brake), 0xC0000000u);
+  EXPECT_EQ(motor_error_word(kMotorDisconnected, MotorDriverMode::Reset), 0x00000001u);
+}
 
 TEST(MotorErrorWord, EachConditionSetsTheBitTheReferenceNames) {
   // cyberdog2-highlevel.md section 5: bit0 disconnected, bit1 coil over-temperature, bit2 driver
   // chip, bit3 under-voltage, bit4 over-voltage, bit8 encoder, bits 9..16 overload, bit17 phase-A
   // over-current, bit24 temperature warning
-  EXPECT_EQ(motor_error_word(kMotorDisconnected), 0x80000001u);
-  EXPECT_EQ(motor_error_word(kMotorOverTemperature), 0x80000002u);
-  EXPECT_EQ(motor_error_word(kMotorDriverFault), 0x80000004u);
-  EXPECT_EQ(motor_error_word(kMotorUnderVoltage), 0x80000008u);
-  EXPECT_EQ(motor_error_word(kMotorOverVoltage), 0x80000010u);
-  EXPECT_EQ(motor_error_word(kMotorEncoderLost), 0x80000100u);
-  EXPECT_EQ(motor_error_word(kMotorOverload), 0x80000200u);
-  EXPECT_EQ(motor_error_word(kMotorOverCurrent), 0x80020000u);
-  EXPECT_EQ(motor_error_word(kMotorTemperatureWarning), 0x81000000u);
+  EXPECT_EQ(motor_error_word(kMotorDisconnected, MotorDriverMode::Motor), 0x80000001u);
+  EXPECT_EQ(motor_error_word(kMotorOverTemperature, MotorDriverMode::Motor), 0x80000002u);
+  EXPECT_EQ(motor_error_word(kMotorDriverFault, MotorDriverMode::Motor), 0x80000004u);
+  EXPECT_EQ(motor_error_word(kMotorUnderVoltage, MotorDriverMode::Motor), 0x80000008u);
+  EXPECT_EQ(motor_error_word(kMotorOverVoltage, MotorDriverMode::Motor), 0x80000010u);
+  EXPECT_EQ(motor_error_word(kMotorEncoderLost, MotorDriverMode::Motor), 0x80000100u);
+  EXPECT_EQ(motor_error_word(kMotorOverload, MotorDriverMode::Motor), 0x80000200u);
+  EXPECT_EQ(motor_error_word(kMotorOverCurrent, MotorDriverMode::Motor), 0x80020000u);
+  EXPECT_EQ(motor_error_word(kMotorTemperatureWarning, MotorDriverMode::Motor), 0x81000000u);
 }
 
 TEST(MotorErrorWord, EveryConditionTripsTheSdkExamplesMaskAndReadsBack) {
   for (std::uint32_t bit = 1; bit <= kMotorTemperatureWarning; bit <<= 1) {
-    const std::uint32_t word = motor_error_word(bit);
+    const std::uint32_t word = motor_error_word(bit, MotorDriverMode::Motor);
     EXPECT_NE(word & kMotorErrorWordFaultMask, 0u) << "fault bit " << bit;
     EXPECT_EQ(motor_faults_from_word(word), bit);
   }
