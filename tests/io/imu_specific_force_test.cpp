@@ -10,6 +10,7 @@
 #include <Eigen/Geometry>
 #include <algorithm>
 #include <cmath>
+#include <cstddef>
 #include <cstring>
 #include <string>
 #include <vector>
@@ -83,9 +84,13 @@ WireImu encode_all(const CycleRecord& record, const SensorFrame& frame) {
   wire.shm_body = vec(imu.acc);
   std::uint8_t bytes[kHighStateBytes];
   encode_high_state(make_feedback(record.state, 1), bytes);
-  UNITREE_LEGGED_SDK::HighState high_state;
-  std::memcpy(&high_state, bytes, sizeof high_state);
-  wire.aliengo_body = vec(high_state.imu.accelerometer);
+  // the vendor's HighState is packed: its floats are not aligned, so they are copied out of the
+  // bytes at the struct's own offsets rather than read through a reference
+  float accelerometer[3];
+  std::memcpy(accelerometer,
+              bytes + offsetof(UNITREE_LEGGED_SDK::HighState, imu) + offsetof(UNITREE_LEGGED_SDK::IMU, accelerometer),
+              sizeof accelerometer);
+  wire.aliengo_body = vec(accelerometer);
   return wire;
 }
 
