@@ -27,6 +27,29 @@ extract_code_block() {
   echo "extracted $(wc -l < "$4") lines from $1"
 }
 
+# build_seed_motor_example <seed> <work dir> <c++ compiler> <include dirs, ':'-separated>
+#                          <libcyber_dog_motor_sdk.so>: the seed's motor SDK example (section 3.4),
+# extracted and compiled unmodified as a user's build would (the SDK's include directories, the
+# library, liblcm, threads; no extra includes) into <work dir>/seed_example_motor_ctrl; exits 1
+# with the compiler's output when it does not compile
+build_seed_motor_example() {
+  local seed=$1 work=$2 cxx=$3 include_dirs=$4 sdk_library=$5
+  local example="$work/seed_example_motor_ctrl.cpp"
+  extract_code_block "$seed" '^### 3\.4' '^```c\+\+' "$example" "custom_interface.hpp"
+  local flags=() dirs=() dir lcm_libs
+  IFS=: read -r -a dirs <<< "$include_dirs"
+  for dir in "${dirs[@]}"; do [[ -n "$dir" ]] && flags+=("-I$dir"); done
+  lcm_libs=$(pkg-config --libs lcm 2>/dev/null || echo -llcm)
+  # shellcheck disable=SC2086
+  if ! "$cxx" -std=c++17 -fno-strict-aliasing "${flags[@]}" "$example" -o "$work/seed_example_motor_ctrl" \
+       "$sdk_library" -Wl,-rpath,"$(dirname "$sdk_library")" $lcm_libs -pthread > "$work/compile.log" 2>&1; then
+    echo "FAILED: the seed's example does not compile against custom_interface.hpp:"
+    cat "$work/compile.log"
+    exit 1
+  fi
+  echo "compiled unmodified"
+}
+
 # start_sim <log file> <cerebellum> <sim arguments...>: starts `cerebellum sim` in the background,
 # sets sim_pid and waits for its ready line; exits 1 with the log when it does not start
 start_sim() {

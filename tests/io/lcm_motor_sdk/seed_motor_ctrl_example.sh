@@ -20,22 +20,7 @@ python_types=$7
 source "$(dirname "$0")/../../seed_support.sh"
 seed=$(seed_file "$seeds") || exit $?
 rm -rf "$work" && mkdir -p "$work"
-example="$work/seed_example_motor_ctrl.cpp"
-extract_code_block "$seed" '^### 3\.4' '^```c\+\+' "$example" "custom_interface.hpp"
-
-# a user's build: the SDK's include directories, the library, liblcm, threads; no extra includes
-flags=()
-IFS=: read -r -a dirs <<< "$include_dirs"
-for dir in "${dirs[@]}"; do [[ -n "$dir" ]] && flags+=("-I$dir"); done
-lcm_libs=$(pkg-config --libs lcm 2>/dev/null || echo -llcm)
-# shellcheck disable=SC2086
-if ! "$cxx" -std=c++17 -fno-strict-aliasing "${flags[@]}" "$example" -o "$work/seed_example_motor_ctrl" \
-     "$sdk_library" -Wl,-rpath,"$(dirname "$sdk_library")" $lcm_libs -pthread > "$work/compile.log" 2>&1; then
-  echo "FAILED: the seed's example does not compile against custom_interface.hpp:"
-  cat "$work/compile.log"
-  exit 1
-fi
-echo "compiled unmodified"
+build_seed_motor_example "$seed" "$work" "$cxx" "$include_dirs" "$sdk_library"
 
 # 12 s of robot time at real-time speed: start-up, activation 2 s, 3 s to lying, 3 s up, holding
 start_truth_watch "$work/truth.log" "$python_types"

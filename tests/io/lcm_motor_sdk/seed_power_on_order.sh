@@ -21,18 +21,19 @@ python_types=$7
 source "$(dirname "$0")/../../seed_support.sh"
 seed=$(seed_file "$seeds") || exit $?
 rm -rf "$work" && mkdir -p "$work"
-example="$work/seed_example_motor_ctrl.cpp"
-extract_code_block "$seed" '^### 3\.4' '^```c\+\+' "$example" "custom_interface.hpp"
-flags=()
-IFS=: read -r -a dirs <<< "$include_dirs"
-for dir in "${dirs[@]}"; do [[ -n "$dir" ]] && flags+=("-I$dir"); done
-lcm_libs=$(pkg-config --libs lcm 2>/dev/null || echo -llcm)
-# shellcheck disable=SC2086
-if ! "$cxx" -std=c++17 -fno-strict-aliasing "${flags[@]}" "$example" -o "$work/seed_example_motor_ctrl" \
-     "$sdk_library" -Wl,-rpath,"$(dirname "$sdk_library")" $lcm_libs -pthread > "$work/compile.log" 2>&1; then
-  echo "FAILED: the seed's example does not compile:"; cat "$work/compile.log"; exit 1
-fi
+build_seed_motor_example "$seed" "$work" "$cxx" "$include_dirs" "$sdk_library"
 fail=0
+
+# stands_at_end <truth log> <what stood it>: the trunk is at least 0.2 m high at the end (sim_truth)
+stands_at_end() {
+  local height
+  height=$(truth_value "$1" final_height_m)
+  if [[ -z "$height" ]] || ! awk -v h="$height" 'BEGIN {exit !(h >= 0.2)}'; then
+    echo "WRONG: the robot is not standing at the end (final height '$height' m)"; fail=1
+  else
+    echo "seen: $2 stood the robot ($height m, sim_truth)"
+  fi
+}
 
 echo "=== 1. the motor SDK example first, on a plain cerebellum sim"
 start_truth_watch "$work/truth1.log" "$python_types"
@@ -53,12 +54,7 @@ cat "$work/cmd1.log"
 grep -q "refused mode 12 .*a low-level client holds the robot" "$work/sim1.log" ||
   { echo "WRONG: the MC's log does not say why the stand was refused"; fail=1; }
 grep -q "^motor sdk: motor mode yes" "$work/sim1.log" || { echo "WRONG: the motor SDK never held the robot"; fail=1; }
-height=$(truth_value "$work/truth1.log" final_height_m)
-if [[ -z "$height" ]] || ! awk -v h="$height" 'BEGIN {exit !(h >= 0.2)}'; then
-  echo "WRONG: the seed's example did not stand the robot (final height '$height' m)"; fail=1
-else
-  echo "seen: the seed's example stood the robot ($height m, sim_truth); the high-level stand was refused"
-fi
+stands_at_end "$work/truth1.log" "the seed's example (the high-level stand was refused)"
 
 echo "=== 2. a high-level stand first, on a plain cerebellum sim"
 start_truth_watch "$work/truth2.log" "$python_types"
@@ -82,10 +78,5 @@ grep -q "motor_ctrl refused: .* has the robot" "$work/sim2.log" ||
 if grep -q "^motor sdk: motor mode yes" "$work/sim2.log"; then
   echo "WRONG: the motor SDK took the robot from the standing high-level MC"; fail=1
 fi
-height=$(truth_value "$work/truth2.log" final_height_m)
-if [[ -z "$height" ]] || ! awk -v h="$height" 'BEGIN {exit !(h >= 0.2)}'; then
-  echo "WRONG: the robot is not standing at the end (final height '$height' m)"; fail=1
-else
-  echo "seen: the high-level MC stood the robot ($height m, sim_truth); the motor SDK was refused"
-fi
+stands_at_end "$work/truth2.log" "the high-level MC (the motor SDK was refused)"
 exit "$fail"
