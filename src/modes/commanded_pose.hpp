@@ -6,6 +6,8 @@
 // absolute and gaits 1 and 3 incremental.
 #pragma once
 
+#include <cmath>
+
 #include <Eigen/Core>
 
 #include "core/high_level_command.hpp"
@@ -19,10 +21,10 @@ namespace cerebellum {
 // nowhere else. Roll (left side up) and yaw (to the left) are right-handed: the seeds say nothing
 // else. Ranges clamp the command's values, so a pitch range -0.25..0.3 is 0.25 rad head down to
 // 0.3 rad head up.
-inline Eigen::Vector3d body_rpy_from_command(const Eigen::Vector3d& rpy_des) {
-  return {rpy_des.x(), -rpy_des.y(), rpy_des.z()};
-}
 inline double body_pitch_from_command(double pitch_des) { return -pitch_des; }
+inline Eigen::Vector3d body_rpy_from_command(const Eigen::Vector3d& rpy_des) {
+  return {rpy_des.x(), body_pitch_from_command(rpy_des.y()), rpy_des.z()};
+}
 
 class CommandedPose {
  public:
