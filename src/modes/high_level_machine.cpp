@@ -42,9 +42,7 @@ bool HighLevelMachine::allows_low_level_latch() const {
 void HighLevelMachine::on_handover() { handed_over_ = true; }
 
 int HighLevelMachine::from_mode() const {
-  return handed_over_       ? static_cast<int>(ModeId::LowLevelMotor)
-         : modes_.started() ? static_cast<int>(modes_.current_id())
-                            : -1;
+  return handed_over_ ? static_cast<int>(ModeId::LowLevelMotor) : modes_.current_mode();
 }
 
 void HighLevelMachine::refuse(const HighLevelCommand& command, const char* reason, const char* holder,
@@ -67,8 +65,7 @@ bool HighLevelMachine::holds_lease(const TimedCommand& input) {
       return true;
     case SourceLease::Verdict::Refused: break;
   }
-  clients_.refused_not_holder(input.source, input.command,
-                              modes_.started() ? static_cast<int>(modes_.current_id()) : -1, *lease_.holder());
+  clients_.refused_not_holder(input.source, input.command, modes_.current_mode(), *lease_.holder());
   // the LCM client sees its refusal in robot_control_response
   if (input.source == HighLevelSource::CyberDog2Lcm) {
     banned_ = true;

@@ -23,6 +23,8 @@ class ModeSwitcher {
   // only once started()
   Mode& current() const { return *current_; }
   ModeId current_id() const { return current_->id(); }
+  // the running mode's id, or -1 before the start (what a refusal note reports as "while in")
+  int current_mode() const { return started() ? static_cast<int>(current_id()) : -1; }
   // the command the running mode was entered or last updated with
   const HighLevelCommand& running_command() const { return running_command_; }
 
