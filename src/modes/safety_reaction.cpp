@@ -87,8 +87,9 @@ std::optional<SwitchStatus> SafetyReaction::health_status() const {
 
 std::optional<SwitchStatus> SafetyReaction::protection_status() const {
   if (const std::optional<SwitchStatus> health = health_status()) return health;
-  if (orientation_error_) return SwitchStatus::EmergencyStop;
-  if (foot_position_error_ != 0) return SwitchStatus::HighDamping;
+  // the seed (000, robot_control_response, ori_error and footpos_error): both trigger "the high
+  // damping protection mode", EDAMP; the reference's "emergency stop" for ori_error loses to it
+  if (orientation_error_ || foot_position_error_ != 0) return SwitchStatus::HighDamping;
   return std::nullopt;
 }
 

@@ -110,7 +110,7 @@ TEST(OrientationErrorSim, TippingOverStopsTheStandUntilARecoveryStand) {
   sim.backend.set_base_pose(t.position, {tipped.w(), tipped.x(), tipped.y(), tipped.z()});
   sim.run(0.01);
   EXPECT_EQ(sim.status().ori_error, 1);
-  EXPECT_EQ(sim.status().switch_status, SwitchStatus::EmergencyStop);
+  EXPECT_EQ(sim.status().switch_status, SwitchStatus::HighDamping);  // the seed: EDAMP, not ESTOP
   EXPECT_EQ(sim.status().mode, 7);
   sim.run(1.5);
   // a pose command is refused; only a recovery stand clears the error and stands the robot up

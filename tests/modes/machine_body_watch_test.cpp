@@ -74,7 +74,7 @@ TEST(WatchedModes, AreTheModesThatStandOnTheirFeet) {
   EXPECT_FALSE(watches_feet(ModeId::QpStand) || watches_feet(ModeId::PoseControl));
 }
 
-TEST(BodyWatch, TippingOverInAStandingModeLatchesAnEmergencyStopUntilARecoveryStand) {
+TEST(BodyWatch, TippingOverInAStandingModeLatchesTheHighDampingProtectionUntilARecoveryStand) {
   Machine m;
   m.tick();
   m.send(cmd(ModeId::QpStand, 0, 1));
@@ -83,13 +83,13 @@ TEST(BodyWatch, TippingOverInAStandingModeLatchesAnEmergencyStopUntilARecoverySt
   m.tick();
   EXPECT_EQ(m.machine.status().mode, 7);
   EXPECT_EQ(m.machine.status().ori_error, 1);
-  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::EmergencyStop);
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::HighDamping);
   // lying on its side now, upright again: still latched; anything but a stand is refused
   m.state.rpy = {0.0, 0.0, 0.0};
   m.send(cmd(ModeId::PoseControl, 0, 2));
   EXPECT_EQ(m.machine.status().mode, 7);
   EXPECT_EQ(m.pose.entered, 0);
-  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::EmergencyStop);
+  EXPECT_EQ(m.machine.status().switch_status, SwitchStatus::HighDamping);
   m.send(cmd(ModeId::RecoveryStand, 0, 3));
   EXPECT_EQ(m.machine.status().mode, 12);
   EXPECT_EQ(m.machine.status().ori_error, 0);

@@ -68,7 +68,7 @@ TEST(SafetyReaction, ATippedOverWalkingRobotIsDampedAndOnlyARecoveryStandClearsT
   ASSERT_EQ(tipped.action, BodyReaction::Action::Damp);
   EXPECT_EQ(tipped.command.mode, static_cast<int>(ModeId::PureDamper));
   EXPECT_TRUE(w.reaction.orientation_error());
-  EXPECT_EQ(w.reaction.protection_status(), SwitchStatus::EmergencyStop);
+  EXPECT_EQ(w.reaction.protection_status(), SwitchStatus::HighDamping);
   // latched while the robot lies: only a recovery stand, damping or off are let through
   EXPECT_NE(w.reaction.refusal(ModeId::Locomotion, ModeId::PureDamper), nullptr);
   EXPECT_EQ(w.reaction.refusal(ModeId::RecoveryStand, ModeId::PureDamper), nullptr);
