@@ -17,16 +17,17 @@ constexpr double kStuckKd = 10.0;
 // the coil temperature an injected over-temperature reports (above the 87 deg C shutdown)
 constexpr double kInjectedCoilTemperatureC = 90.0;
 
-// the MotorFault bits a driver reports for an injected motor fault (the silent ones report none)
-std::uint32_t reported_bits(FaultKind kind) {
+// the MotorFault bits a driver reports for an injected motor fault (the silent ones report none);
+// value: the over-current's phase, the overload's bit (the request's value)
+std::uint32_t reported_bits(FaultKind kind, double value) {
   switch (kind) {
     case FaultKind::Disconnected: return kMotorDisconnected;
     case FaultKind::OverTemperature: return kMotorOverTemperature | kMotorTemperatureWarning;
     case FaultKind::DriverFault: return kMotorDriverFault;
     case FaultKind::UnderVoltage: return kMotorUnderVoltage;
     case FaultKind::OverVoltage: return kMotorOverVoltage;
-    case FaultKind::OverCurrent: return kMotorOverCurrent;
-    case FaultKind::Overload: return kMotorOverload;
+    case FaultKind::OverCurrent: return motor_over_current(static_cast<MotorPhase>(static_cast<int>(value)));
+    case FaultKind::Overload: return motor_overload(static_cast<int>(value));
     case FaultKind::EncoderLost: return kMotorEncoderLost;
     default: return kMotorOk;
   }
@@ -194,7 +195,7 @@ SensorFrame FaultInjectingBackend::read() {
   // motors
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     const InjectedMotorFault& motor = motors_[i];
-    frame.motor_faults[i] |= reported_bits(motor.kind);
+    frame.motor_faults[i] |= reported_bits(motor.kind, motor.value);
     switch (motor.kind) {
       case FaultKind::Disconnected:
         // no answer: the last values it sent

@@ -1,5 +1,6 @@
 #include "backend/fault_request.hpp"
 
+#include <algorithm>
 #include <array>
 #include <cmath>
 #include <cstdio>
@@ -7,6 +8,7 @@
 #include <sstream>
 
 #include "core/joint_layout.hpp"
+#include "core/motor_health.hpp"
 #include "core/number_text.hpp"
 
 namespace cerebellum {
@@ -19,6 +21,9 @@ struct KindWord {
   bool takes_value;
   double lower, upper;  // the value's range (inclusive)
   double fallback;      // value when optional and absent (NaN: required)
+  bool whole = false;   // the value is a whole number
+  // the value is one of these letters, kept as its index (the phase of an over-current)
+  const char* letters = nullptr;
 };
 
 constexpr double kRequired = std::numeric_limits<double>::quiet_NaN();
@@ -30,8 +35,10 @@ const std::array<KindWord, 20> kKinds{{
     {FaultTarget::Motor, FaultKind::DriverFault, "driver_fault", false, 0, 0, 0},
     {FaultTarget::Motor, FaultKind::UnderVoltage, "under_voltage", false, 0, 0, 0},
     {FaultTarget::Motor, FaultKind::OverVoltage, "over_voltage", false, 0, 0, 0},
-    {FaultTarget::Motor, FaultKind::OverCurrent, "over_current", false, 0, 0, 0},
-    {FaultTarget::Motor, FaultKind::Overload, "overload", false, 0, 0, 0},
+    // the phase the driver names (MotorPhase: A, B, C); A when not given, the seed's bit 17
+    {FaultTarget::Motor, FaultKind::OverCurrent, "over_current", true, 0, 2, 0, false, "ABC"},
+    // which of the driver's eight overload bits
+    {FaultTarget::Motor, FaultKind::Overload, "overload", true, 1, kMotorOverloadKinds, 1, true},
     {FaultTarget::Motor, FaultKind::EncoderLost, "encoder_lost", false, 0, 0, 0},
     {FaultTarget::Motor, FaultKind::Stuck, "stuck", false, 0, 0, 0},
     {FaultTarget::Motor, FaultKind::Derated, "derated", true, 0.0, 1.0, kRequired},
@@ -91,6 +98,31 @@ std::optional<int> leg_index(const std::string& word) {
 
 std::string clip(const std::string& word) { return word.substr(0, 32); }
 
+// "ABC" -> "A|B|C"
+std::string letter_choices(const char* letters) {
+  std::string out;
+  for (const char* c = letters; *c != '\0'; ++c) {
+    if (!out.empty()) out += '|';
+    out += *c;
+  }
+  return out;
+}
+
+// the index of a one-letter word in letters
+std::optional<double> letter_index(const std::string& word, const char* letters) {
+  const std::string all = letters;
+  const std::size_t at = word.size() == 1 ? all.find(word[0]) : std::string::npos;
+  if (at == std::string::npos) return std::nullopt;
+  return static_cast<double>(at);
+}
+
+std::string value_text(const KindWord& kind, double value) {
+  const std::string letters = kind.letters != nullptr ? kind.letters : "";
+  if (letters.empty()) return format_number(value);
+  const auto at = static_cast<std::size_t>(std::clamp(value, 0.0, static_cast<double>(letters.size() - 1)));
+  return letters.substr(at, 1);
+}
+
 FaultParse failure(const std::string& why) { return FaultParse{std::nullopt, why}; }
 
 std::string kinds_of(FaultTarget target) {
@@ -104,9 +136,10 @@ std::string kinds_of(FaultTarget target) {
 }  // namespace
 
 const char* fault_grammar() {
-  return "motor N disconnected|over_temperature|driver_fault|under_voltage|over_voltage|over_current|overload|"
-         "encoder_lost|stuck|derated FRACTION|hot DEG_C; imu bias RAD_S|stuck|dropout|nan; battery soc PERCENT|drain "
-         "FACTOR|capacity AH|sag VOLTS; foot LEG slippery [MU]; clear [motor N|imu|battery|foot LEG]; "
+  return "motor N disconnected|over_temperature|driver_fault|under_voltage|over_voltage|over_current [A|B|C]|"
+         "overload [1..8]|encoder_lost|stuck|derated FRACTION|hot DEG_C; imu bias RAD_S|stuck|dropout|nan; "
+         "battery soc PERCENT|drain FACTOR|capacity AH|sag VOLTS; foot LEG slippery [MU]; "
+         "clear [motor N|imu|battery|foot LEG]; "
          "each optionally followed by: for SECONDS";
 }
 
@@ -204,10 +237,20 @@ FaultParse parse_fault(const std::vector<std::string>& all_words) {
     request.value = kind->fallback;
     return FaultParse{request, ""};
   }
+  if (kind->letters != nullptr) {
+    const std::optional<double> index = letter_index(words[next + 1], kind->letters);
+    if (!index) {
+      return failure(head + " " + kind->word + " value must be " + letter_choices(kind->letters) + ", got '" +
+                     clip(words[next + 1]) + "'");
+    }
+    request.value = *index;
+    return FaultParse{request, ""};
+  }
   const std::optional<double> value = finite_number(words[next + 1]);
-  if (!value || *value < kind->lower || *value > kind->upper) {
-    return failure(head + " " + kind->word + " value must be a number in [" + format_number(kind->lower) + ", " +
-                   format_number(kind->upper) + "], got '" + clip(words[next + 1]) + "'");
+  if (!value || *value < kind->lower || *value > kind->upper || (kind->whole && *value != std::floor(*value))) {
+    return failure(head + " " + kind->word + " value must be " + (kind->whole ? "a whole number" : "a number") +
+                   " in [" + format_number(kind->lower) + ", " + format_number(kind->upper) + "], got '" +
+                   clip(words[next + 1]) + "'");
   }
   request.value = *value;
   return FaultParse{request, ""};
@@ -231,7 +274,7 @@ std::string fault_text(const FaultRequest& request) {
   for (const KindWord& k : kKinds) {
     if (k.target == request.target && k.kind == request.kind) {
       word(k.word);
-      if (k.takes_value) word(format_number(request.value));
+      if (k.takes_value) word(value_text(k, request.value));
     }
   }
   if (request.duration_s > 0.0) {

@@ -1,13 +1,15 @@
 // The faults the simulation can inject, in one small text grammar shared by the `cerebellum fault`
 // verb, the simulation's control channel and the fault scenario files:
 //   motor N disconnected | over_temperature | driver_fault | under_voltage | over_voltage |
-//           over_current | overload | encoder_lost | stuck | derated FRACTION
+//           over_current [A|B|C] | overload [1..8] | encoder_lost | stuck | derated FRACTION
 //   imu bias RAD_S | stuck | dropout | nan
 //   battery soc PERCENT | drain FACTOR | capacity AH | sag VOLTS
 //   foot LEG slippery [MU]
 //   clear [motor N | imu | battery | foot LEG]
 // N is the motor in SDK order (0 FR abad, 1 FR hip, 2 FR knee, 3 FL abad, ... 11 RL knee) or its
-// name (FR_knee); LEG is 0..3 or FR, FL, RR, RL. An optional "for SECONDS" ends a fault by itself.
+// name (FR_knee); LEG is 0..3 or FR, FL, RR, RL. An over-current names the driver's phase (A when
+// not given), an overload which of its eight overload bits (1 when not given). An optional
+// "for SECONDS" ends a fault by itself.
 #pragma once
 
 #include <optional>
@@ -52,7 +54,9 @@ struct FaultRequest {
   FaultTarget target = FaultTarget::All;
   int index = -1;  // the motor (0..11) or the leg (0..3); -1 for the IMU, the battery and "clear" of all
   FaultKind kind = FaultKind::Clear;
-  double value = 0.0;       // the kind's number (fraction, rad/s, %, factor, Ah, V, friction)
+  // the kind's number (fraction, rad/s, %, factor, Ah, V, friction; the over-current's
+  // phase as a MotorPhase, the overload's bit 1..8)
+  double value = 0.0;
   double duration_s = 0.0;  // > 0: the fault ends by itself after this long; 0: until cleared
 };
 

@@ -99,6 +99,21 @@ TEST(FaultInjectingBackend, ImuFaultsBiasFreezeDropAndPoisonTheSamples) {
   EXPECT_EQ(robot.step().imu_gyro[0], 9.0);
 }
 
+TEST(FaultInjectingBackend, AnOverCurrentReportsItsPhaseAndAnOverloadItsBitAndTheDriverStopsItsMotor) {
+  Injected robot;
+  robot.step();
+  robot.backend->request(fault("motor 2 over_current C"));
+  robot.backend->request(fault("motor 7 overload 8"));
+  robot.backend->request(fault("motor 9 over_current"));
+  const SensorFrame frame = robot.step();
+  EXPECT_EQ(frame.motor_faults[2], kMotorOverCurrentPhaseC);
+  EXPECT_EQ(frame.motor_faults[7], motor_overload(8));
+  EXPECT_EQ(frame.motor_faults[9], kMotorOverCurrentPhaseA);  // phase A when not named
+  const JointCommand& written = robot.fake->written().back();
+  for (std::size_t i : {2u, 7u, 9u}) EXPECT_EQ(written.kp[i], 0.0) << "motor " << i;
+  EXPECT_EQ(written.kp[3], 50.0);
+}
+
 TEST(FaultInjectingBackend, TheBatteryReportsTheInjectedChargeAndDrainsFromThere) {
   Injected robot;
   robot.step();

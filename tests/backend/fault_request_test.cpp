@@ -4,6 +4,10 @@
 
 #include <gtest/gtest.h>
 
+#include <string>
+
+#include "core/motor_health.hpp"
+
 namespace cerebellum {
 namespace {
 
@@ -33,8 +37,8 @@ TEST(FaultRequest, MotorsAreNamedByIndexOrByLegAndJoint) {
 TEST(FaultRequest, EveryFaultReadsBackFromItsText) {
   for (const char* text : {"motor 0 disconnected", "motor 1 over_temperature",
                            "motor 2 driver_fault", "motor 3 under_voltage",
-                           "motor 4 over_voltage", "motor 5 over_current",
-                           "motor 6 overload",     "motor 7 encoder_lost",
+                           "motor 4 over_voltage", "motor 5 over_current B",
+                           "motor 6 overload 8",   "motor 7 encoder_lost",
                            "motor 8 stuck",        "motor 9 derated 0.5",
                            "motor 10 hot 78",
                            "imu bias -0.02",       "imu stuck",
@@ -50,6 +54,32 @@ TEST(FaultRequest, EveryFaultReadsBackFromItsText) {
   }
   // a slippery foot's friction has a default
   EXPECT_EQ(parsed("foot RR slippery").value, 0.05);
+}
+
+TEST(FaultRequest, AnOverCurrentNamesItsPhaseAndAnOverloadItsBitWithPhaseAAndBitOneWhenNotGiven) {
+  EXPECT_EQ(parsed("motor 5 over_current").value, static_cast<double>(MotorPhase::A));
+  EXPECT_EQ(parsed("motor 5 over_current A").value, static_cast<double>(MotorPhase::A));
+  EXPECT_EQ(parsed("motor 5 over_current B").value, static_cast<double>(MotorPhase::B));
+  EXPECT_EQ(parsed("motor 5 over_current C for 2").value, static_cast<double>(MotorPhase::C));
+  EXPECT_EQ(fault_text(parsed("motor 5 over_current")), "motor 5 over_current A");
+  EXPECT_EQ(parsed("motor 6 overload").value, 1.0);
+  EXPECT_EQ(parsed("motor 6 overload 8").value, 8.0);
+  EXPECT_EQ(fault_text(parsed("motor 6 overload")), "motor 6 overload 1");
+  for (const char* text : {"motor 0 over_current A", "motor 0 over_current B", "motor 0 over_current C"}) {
+    EXPECT_EQ(fault_text(parsed(text)), text);
+  }
+  for (int kind = 1; kind <= 8; ++kind) {
+    const std::string text = "motor 0 overload " + std::to_string(kind);
+    EXPECT_EQ(fault_text(parsed(text)), text);
+  }
+  EXPECT_NE(refusal("motor 5 over_current D").find("over_current value must be A|B|C, got 'D'"), std::string::npos);
+  EXPECT_NE(refusal("motor 5 over_current b").find("must be A|B|C"), std::string::npos);
+  EXPECT_NE(refusal("motor 5 over_current AB").find("must be A|B|C"), std::string::npos);
+  EXPECT_NE(refusal("motor 6 overload 0").find("overload value must be a whole number in [1, 8], got '0'"),
+            std::string::npos);
+  EXPECT_NE(refusal("motor 6 overload 9").find("[1, 8]"), std::string::npos);
+  EXPECT_NE(refusal("motor 6 overload 2.5").find("a whole number"), std::string::npos);
+  EXPECT_NE(refusal("motor 6 overload B").find("a whole number"), std::string::npos);
 }
 
 TEST(FaultRequest, BadInputIsRefusedWithWhatIsAccepted) {

@@ -6,19 +6,29 @@
 namespace cerebellum {
 namespace {
 
-// MotorFault bit -> the seed's bit (cyberdog2-highlevel.md section 5): over-current is reported
-// as phase A (bit 17), overload as the first overload bit (9)
-constexpr std::array<std::pair<std::uint32_t, std::uint32_t>, 9> kWordBits{{
-    {kMotorDisconnected, 1u << 0},
-    {kMotorOverTemperature, 1u << 1},
-    {kMotorDriverFault, 1u << 2},
-    {kMotorUnderVoltage, 1u << 3},
-    {kMotorOverVoltage, 1u << 4},
-    {kMotorEncoderLost, 1u << 8},
-    {kMotorOverload, 1u << 9},
-    {kMotorOverCurrent, 1u << 17},
-    {kMotorTemperatureWarning, 1u << 24},
-}};
+using BitPair = std::pair<std::uint32_t, std::uint32_t>;
+constexpr std::size_t kSingleBits = 10;
+
+// MotorFault bit -> the seed's bit (cyberdog2-highlevel.md section 5): over-current by its phase
+// (A 17, B 5, C 6), overload kind k at bit 8 + k (9..16)
+constexpr std::array<BitPair, kSingleBits + kMotorOverloadKinds> kWordBits = [] {
+  std::array<BitPair, kSingleBits + kMotorOverloadKinds> bits{{
+      {kMotorDisconnected, 1u << 0},
+      {kMotorOverTemperature, 1u << 1},
+      {kMotorDriverFault, 1u << 2},
+      {kMotorUnderVoltage, 1u << 3},
+      {kMotorOverVoltage, 1u << 4},
+      {kMotorOverCurrentPhaseB, 1u << 5},
+      {kMotorOverCurrentPhaseC, 1u << 6},
+      {kMotorEncoderLost, 1u << 8},
+      {kMotorOverCurrentPhaseA, 1u << 17},
+      {kMotorTemperatureWarning, 1u << 24},
+  }};
+  for (int kind = 1; kind <= kMotorOverloadKinds; ++kind) {
+    bits[kSingleBits + static_cast<std::size_t>(kind - 1)] = {motor_overload(kind), 1u << (8 + kind)};
+  }
+  return bits;
+}();
 
 }  // namespace
 
@@ -35,9 +45,6 @@ std::uint32_t motor_faults_from_word(std::uint32_t word) {
   for (const auto& [fault, bit] : kWordBits) {
     if (word & bit) faults |= fault;
   }
-  // the seed's other over-current and overload bits (phases B, C; overload 10..16)
-  if (word & ((1u << 5) | (1u << 6))) faults |= kMotorOverCurrent;
-  if (word & (0xFFu << 9) & ~(1u << 9)) faults |= kMotorOverload;
   return faults;
 }
 

@@ -40,7 +40,7 @@ std::int32_t shm_joint_state_flags(double temperature_c, std::uint32_t motor_fau
   if ((motor_faults & kMotorErrorBits) == 0 && driver_mode == MotorDriverMode::Motor) flags |= JOINT_STATE_ENABLED;
   if (motor_faults & kMotorOverSpeed) flags |= JOINT_STATE_OVER_SPEED;
   if (motor_faults & kMotorOverVoltage) flags |= JOINT_STATE_OVER_VOLTAGE;
-  if (motor_faults & kMotorOverCurrent) flags |= JOINT_STATE_OVER_CURRENT;
+  if (motor_faults & kMotorOverCurrentAnyPhase) flags |= JOINT_STATE_OVER_CURRENT;
   if (motor_faults & kMotorOverTemperature) flags |= JOINT_STATE_OVER_TEMPERATURE;
   if (motor_faults & kMotorEncoderLost) flags |= JOINT_STATE_ENCODER_FAULT;
   return static_cast<std::int32_t>(flags);

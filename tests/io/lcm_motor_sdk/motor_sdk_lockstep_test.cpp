@@ -9,7 +9,11 @@
 #include "loop/mc.hpp"
 #include "loop/simulated_robot.hpp"
 #include "core/robot_model.hpp"
+#include "io/common/motor_error_word.hpp"
+#include "io/lcm_highlevel/highlevel_wire.hpp"
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
+#include "io/shm_lowlevel/shm_codec.hpp"
+#include "lowlevel/lowlevel.h"
 #include "lowlevel/motor_sdk/motor_sdk_source.hpp"
 
 namespace cerebellum {
@@ -187,6 +191,41 @@ TEST_F(MotorSdkLockstep, AMotorFaultInMotorModeDampsWhateverTheClientSendsAndRep
   run(9.0, &again);
   EXPECT_EQ(mc_.loop().last_cycle().safety.flags & (kGuardHealthDamping | kGuardHealthStopped), 0u);
   EXPECT_GE(height_m(), 0.2);
+}
+
+TEST_F(MotorSdkLockstep, AnOverCurrentShowsItsPhasesBitAndAnOverloadItsOwnBitOnTheWire) {
+  // the driver names the phase (seed: bit 5 phase B, bit 17 phase A) and one of the overload bits
+  // 9..16; the client sees exactly the one raised, in spi_data and in robot_control_response
+  run(0.5, nullptr);
+  ExampleClient client;
+  run(1.0, &client);
+  ASSERT_EQ(mc_.arbiter().latched(), &source_);
+  ASSERT_EQ(mc_.faults()->request(parse_fault("motor FL_hip over_current B").request.value()), "");
+  ASSERT_EQ(mc_.faults()->request(parse_fault("motor RR_knee overload 8").request.value()), "");
+  run(0.1, &client);
+  const CycleRecord& record = mc_.loop().last_cycle();
+  const spi_data_t spi = make_spi_data(record.state);
+  const robot_control_response_lcmt response = make_response(record.high_level.status);
+  // each faulted driver has stopped its motor (reset, bits 30..31 = 0) and carries its one bit
+  constexpr std::size_t kOverCurrentMotor = 4, kOverloadMotor = 8;
+  EXPECT_EQ(static_cast<std::uint32_t>(spi.flags[kOverCurrentMotor]), 1u << 5);
+  EXPECT_EQ(static_cast<std::uint32_t>(response.motor_error[kOverCurrentMotor]), 1u << 5);
+  EXPECT_EQ(static_cast<std::uint32_t>(spi.flags[kOverloadMotor]), 1u << 16);
+  EXPECT_EQ(static_cast<std::uint32_t>(response.motor_error[kOverloadMotor]), 1u << 16);
+  EXPECT_EQ(static_cast<std::uint32_t>(spi.flags[0]), kMotorErrorWordHealthy);
+  // read back on the client side as exactly what was injected
+  EXPECT_EQ(motor_faults_from_word(static_cast<std::uint32_t>(spi.flags[kOverCurrentMotor])), kMotorOverCurrentPhaseB);
+  EXPECT_EQ(motor_faults_from_word(static_cast<std::uint32_t>(spi.flags[kOverloadMotor])), motor_overload(8));
+  // the shared memory has one over-current bit for every phase (bit 2), and no bit for an overload
+  const auto shm_fault_bits = [&](std::size_t i) {
+    return static_cast<std::uint32_t>(shm_joint_state_flags(record.state.temperature_c[i], record.state.motor_faults[i],
+                                                            24.0, record.state.driver_mode[i])) &
+           0xFFu;
+  };
+  EXPECT_EQ(shm_fault_bits(kOverCurrentMotor), JOINT_STATE_OVER_CURRENT);
+  EXPECT_EQ(shm_fault_bits(kOverloadMotor), 0u);
+  // and the robot is protected as for any motor error
+  EXPECT_EQ(record.safety.flags, kGuardHealthDamping);
 }
 
 TEST_F(MotorSdkLockstep, StandingRobotIsNotHandedOver) {

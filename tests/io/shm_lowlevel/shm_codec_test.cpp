@@ -31,7 +31,12 @@ TEST(ShmCodec, JointStateFlagsReportAMotorsFaultsTheWayTheOtherInterfacesDo) {
   EXPECT_EQ(flags(kMotorTemperatureWarning), 0x01u);  // a warning: still enabled
   EXPECT_EQ(flags(kMotorOverTemperature | kMotorTemperatureWarning), 0x08u);
   EXPECT_EQ(flags(kMotorOverVoltage), 0x02u);
-  EXPECT_EQ(flags(kMotorOverCurrent), 0x04u);
+  // one over-current bit for any phase; an overload of any kind has no bit: not enabled
+  for (MotorPhase phase : {MotorPhase::A, MotorPhase::B, MotorPhase::C}) {
+    EXPECT_EQ(flags(motor_over_current(phase)), 0x04u);
+  }
+  EXPECT_EQ(flags(motor_overload(1)), 0x00u);
+  EXPECT_EQ(flags(motor_overload(8)), 0x00u);
   EXPECT_EQ(flags(kMotorEncoderLost), 0x20u);
   EXPECT_EQ(flags(kMotorDisconnected), 0x00u);
   EXPECT_EQ(flags(kMotorDriverFault), 0x00u);
