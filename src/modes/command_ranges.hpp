@@ -57,6 +57,12 @@ struct UserGaitRanges {
   Range step_height{0.0, 0.10};                   // packed in mm, up to 999 on the wire
   Range landing_gain{0.01, 10.0};                 // outside: 1.0 (reference)
   Range friction{0.1, 1.0};                       // outside: the MPC's own (reference: "sane range")
+  // body_pos_des x, y (pos_des[0:2]) of a step without velocity on that axis: the trunk's reach over
+  // planted feet (mode 21's), as a step may keep every foot down while the trunk moves
+  Range offset_x = PoseControlRanges{}.offset_x;
+  Range offset_y = PoseControlRanges{}.offset_y;
+  // |vel_des| below this on an axis (m/s) is no velocity there: under 1 mm per second of travel
+  double no_velocity_m_s = 1e-3;
 };
 
 // mode 11 velocity limits of a gait (gait table; clamped, not rejected)

@@ -6,6 +6,12 @@
 
 namespace cerebellum {
 
+Eigen::Vector3d UserGaitStep::body_velocity() const {
+  Eigen::Vector3d body = velocity;
+  if (duration_s > 0.0) body.head<2>() += position_offset_m / duration_s;
+  return body;
+}
+
 double UserGaitProgram::sequence_s() const { return sequence ? sequence->segments() * kGaitSegmentS : 0.0; }
 
 double UserGaitProgram::steps_s() const {

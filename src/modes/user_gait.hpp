@@ -18,9 +18,17 @@ namespace cerebellum {
 struct UserGaitStep {
   double duration_s = 0.0;
   Eigen::Vector3d velocity = Eigen::Vector3d::Zero();  // vx, vy (m/s, body), yaw rate (rad/s)
+  // how far the body moves in the step along x, y where it gives no velocity (body_pos_des x, y, m;
+  // body frame like the velocity): from where the step begins, not where the gait began, so a
+  // zero offset stays put after a walking step instead of walking back to the gait's start
+  Eigen::Vector2d position_offset_m = Eigen::Vector2d::Zero();
   double pitch_rad = 0.0;
   double height_m = 0.0;  // trunk height above the ground
   UserStepTargets legs;   // landing points, swing heights, roll, yaw offset, friction
+
+  // what the body is steered at: the velocity, plus the offset spread evenly over the step (the
+  // controller integrates it into the position reference, as it does a given velocity)
+  Eigen::Vector3d body_velocity() const;
 };
 
 struct UserGaitProgram {

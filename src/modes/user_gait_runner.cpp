@@ -52,7 +52,7 @@ void UserGaitRunner::steer_to_step(std::size_t index) {
   target.vertical_legs = true;  // landing offsets are from under the hips
   if (index < program_->steps.size()) {
     const UserGaitStep& step = program_->steps[index];
-    target.velocity = step.velocity;
+    target.velocity = step.body_velocity();
     target.pitch_rad = step.pitch_rad;
     target.height_m = step.height_m;
     target.user_step = step.legs;

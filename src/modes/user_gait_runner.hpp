@@ -1,8 +1,8 @@
 // Gait 110 of mode 11: runs the uploaded user gait once on the walking controller. The
 // definition's contact schedule is played from the first section; the parameter steps follow one
-// another in time (body velocity integrated into position, pose, each swing leg's landing point
-// and height); when the total time is done the robot stands on the MPC and waits. The progress
-// bar is the elapsed share of the total time.
+// another in time (body velocity, or where a step gives none its position offset, integrated into
+// position; pose, each swing leg's landing point and height); when the total time is done the
+// robot stands on the MPC and waits. The progress bar is the elapsed share of the total time.
 #pragma once
 
 #include <memory>

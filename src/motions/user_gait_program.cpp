@@ -115,6 +115,16 @@ UserGaitStep decode_user_gait_step(const HighLevelCommand& step) {
   UserGaitStep decoded;
   decoded.duration_s = std::max(0, step.duration) * 1e-3;
   decoded.velocity = {step.vel_des[0], step.vel_des[1], step.vel_des[2]};  // the controller clamps it
+  // body_pos_des x, y arrive in pos_des[0:2] (the seed's converter: pos_des = body_pos_des[3:6]).
+  // The seed integrates the velocity into the position "in this direction" and uses the file's
+  // position only where no velocity is given: so axis by axis
+  const std::array<Range, 2> offset_ranges{ranges.offset_x, ranges.offset_y};
+  for (int axis = 0; axis < 2; ++axis) {
+    if (std::abs(step.vel_des[axis]) < ranges.no_velocity_m_s) {
+      decoded.position_offset_m[axis] = offset_ranges[axis].clamp(step.pos_des[axis]);
+    }
+  }
+  decoded.legs.leans_to_position = !decoded.position_offset_m.isZero();
   decoded.pitch_rad = body_pitch_from_command(ranges.pitch.clamp(step.rpy_des[1]));
   decoded.height_m = step.pos_des[2] > 0.0f ? ranges.height.clamp(step.pos_des[2]) : kDefaultBodyHeightM;
   UserStepTargets& legs = decoded.legs;

@@ -19,8 +19,9 @@ std::string describe_gait_file(const UserGaitFile& file) {
   }
   long duration_ms = 0;
   for (const HighLevelCommand& step : file.parameters.steps) duration_ms += step.duration;
+  // the fields the firmware gives a meaning this MC cannot: said where the upload is logged
   return "gait parameters: " + std::to_string(file.parameters.steps.size()) + " steps, " + std::to_string(duration_ms) +
-         " ms";
+         " ms (" + std::string(kUnusedGaitParameters) + ")";
 }
 
 }  // namespace

@@ -55,6 +55,7 @@ struct Periodic {
   std::vector<std::pair<std::array<int, 4>, int>> cycle;
   int cycles = 8;
   double vx = 0.0;
+  double x = 0.0;  // body_pos_des x of each step
   double lx = 0.0;
   double height = 0.05;
 };
@@ -76,9 +77,9 @@ Gait periodic(const Periodic& p) {
     const std::string lx = std::to_string(p.lx);
     const std::string h = std::to_string(p.height);
     parameters += "[[step]]\ntype = \"usergait\"\nbody_vel_des = [" + std::to_string(p.vx) +
-                  ", 0.0, 0.0]\nbody_pos_des = [0.0, 0.0, 0.0, 0.0, 0.0, 0.0]\nlanding_pos_des = [" + lx + ", 0, 0, " +
-                  lx + ", 0, 0, " + lx + ", 0, 0, " + lx + ", 0, 0]\nstep_height = [" + h + ", " + h + ", " + h + ", " +
-                  h +
+                  ", 0.0, 0.0]\nbody_pos_des = [0.0, 0.0, 0.0, " + std::to_string(p.x) +
+                  ", 0.0, 0.0]\nlanding_pos_des = [" + lx + ", 0, 0, " + lx + ", 0, 0, " + lx + ", 0, 0, " + lx +
+                  ", 0, 0]\nstep_height = [" + h + ", " + h + ", " + h + ", " + h +
                   "]\nweight = [1, 1, 1, 1, 1, 1]\nuse_mpc_traj = 1\nmu = 0.4\nlanding_gain = 1.0\ngait_id = 110\n"
                   "duration = " +
                   std::to_string(cycle_units * 30) + "\n";
@@ -92,8 +93,9 @@ struct GaitRun {
   int contact_mismatches = 0;  // a stance foot in the air or a high-swing foot on the ground
   double lowest_height_m = 1.0;
   double largest_tilt_rad = 0.0;
-  double progress_error = 0.0;  // largest |bar - elapsed share|
-  Eigen::Vector3d moved = Eigen::Vector3d::Zero();
+  double progress_error = 0.0;                             // largest |bar - elapsed share|
+  Eigen::Vector3d moved = Eigen::Vector3d::Zero();         // 1.5 s after the end
+  Eigen::Vector3d moved_at_end = Eigen::Vector3d::Zero();  // when the gait's time is up
   bool ended_standing = false;
 };
 
@@ -132,16 +134,18 @@ GaitRun run_gait(const Gait& gait, bool check_swing) {
     }
     section_start += length;
   }
-  sim.run(program->duration_s() - (sim.time_s() - t0) + 1.5);
+  sim.run(program->duration_s() - (sim.time_s() - t0));
+  run.moved_at_end = sim.true_position() - start;
+  sim.run(1.5);
   run.moved = sim.true_position() - start;
   const Eigen::Vector3d rpy = sim.true_rpy();
   bool feet_down = true;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) feet_down &= sim.true_foot(leg).z() < 0.03;
   std::printf(
       "user gait %.2f s: %d sections checked, %d contact mismatches, lowest %.3f m, tilt %.3f rad, "
-      "bar error %.1f, moved %+.3f %+.3f m\n",
+      "bar error %.1f, moved %+.3f %+.3f m (%+.3f %+.3f at the end)\n",
       program->duration_s(), run.sections_checked, run.contact_mismatches, run.lowest_height_m, run.largest_tilt_rad,
-      run.progress_error, run.moved.x(), run.moved.y());
+      run.progress_error, run.moved.x(), run.moved.y(), run.moved_at_end.x(), run.moved_at_end.y());
   run.ended_standing = sim.status().mode == 11 && sim.status().gait_id == kUserGaitId &&
                        sim.status().order_process_bar == 100 && feet_down && std::abs(rpy.x()) < 0.05 &&
                        std::abs(rpy.y()) < 0.05 && std::abs(sim.true_height() - kDefaultBodyHeightM) < 0.02;
@@ -188,6 +192,45 @@ TEST(UserGaitSim, ATwoBeatTrotDefinedAsAUserGaitTrotsAtItsVelocity) {
   EXPECT_LT(run.largest_tilt_rad, 0.25);
   const double expected = 0.3 * 15 * 12 * 0.03;
   EXPECT_NEAR(run.moved.x(), expected, 0.15 * expected);
+  EXPECT_TRUE(run.ended_standing);
+}
+
+// every foot down for 1.5 s and one step of 1.2 s without velocity: the body goes to body_pos_des x, y
+Gait planted_step(double x, double y) {
+  const std::string definition = "# Gait Def\n[[section]]\ncontact = [1, 1, 1, 1]\nduration = 50\n";
+  const std::string parameters =
+      "# Gait Params\n[[step]]\ntype = \"usergait\"\nbody_vel_des = [0.0, 0.0, 0.0]\nbody_pos_des = [0.0, 0.0, 0.0, " +
+      std::to_string(x) + ", " + std::to_string(y) +
+      ", 0.0]\nlanding_pos_des = [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0]\nstep_height = [0.05, 0.05, 0.05, 0.05]\n"
+      "weight = [1, 1, 1, 1, 1, 1]\nuse_mpc_traj = 1\nmu = 0.4\nlanding_gain = 1.0\ngait_id = 110\nduration = 1200\n";
+  return load(definition, parameters);
+}
+
+// the firmware's "used when no velocity is given": 5 cm forward on planted feet, where the trunk
+// is when the gait's time is up. It reaches 4.9 cm; without the decoding it ends 0.8 cm behind
+// where it stood (a planted user stand drifts back slowly, as before), so 1 cm either way tells
+// the two apart by more than four widths of the tolerance
+TEST(UserGaitSim, AStepWithoutVelocityMovesTheTrunkToItsBodyPositionX) {
+  const GaitRun run = run_gait(planted_step(0.05, 0.0), false);
+  EXPECT_EQ(run.contact_mismatches, 0);
+  EXPECT_NEAR(run.moved_at_end.x(), 0.05, 0.01);
+  EXPECT_NEAR(run.moved_at_end.y(), 0.0, 0.01);
+  EXPECT_TRUE(run.ended_standing);
+}
+
+// each step's body position counts from where that step begins: a trot with no velocity and 2 cm
+// per cycle walks 15 x 2 cm (counted from the gait's start it would stop at 2 cm). Held to the
+// 15 % the trot driven by velocity is
+TEST(UserGaitSim, BodyPositionsOfStepsWithoutVelocityAddUpFromEachStepsStart) {
+  Periodic trot;
+  trot.cycle = {{{1, 0, 0, 1}, 6}, {{0, 1, 1, 0}, 6}};
+  trot.cycles = 15;
+  trot.x = 0.02;
+  trot.height = 0.06;
+  const GaitRun run = run_gait(periodic(trot), true);
+  EXPECT_EQ(run.contact_mismatches, 0);
+  EXPECT_LT(run.largest_tilt_rad, 0.25);
+  EXPECT_NEAR(run.moved.x(), 15 * 0.02, 0.15 * 15 * 0.02);
   EXPECT_TRUE(run.ended_standing);
 }
 

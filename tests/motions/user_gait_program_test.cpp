@@ -68,6 +68,29 @@ TEST(UserGaitStepDecoding, HeightZeroMeansTheDefaultAndPoseIsClamped) {
   EXPECT_FLOAT_EQ(decoded.legs.yaw_offset_rad, 0.1f);
 }
 
+TEST(UserGaitStepDecoding, BodyPositionXYMovesTheBodyOverTheStepOnlyWhereNoVelocityIsGiven) {
+  HighLevelCommand step = user_step(500);
+  step.pos_des = {0.05f, -0.02f, 0.0f};  // body_pos_des x, y as the seed's converter places them
+  UserGaitStep decoded = decode_user_gait_step(step);
+  EXPECT_FLOAT_EQ(decoded.position_offset_m.x(), 0.05f);
+  EXPECT_FLOAT_EQ(decoded.position_offset_m.y(), -0.02f);
+  // 0.05 m in 0.5 s: steered at 0.1 m/s forward, -0.04 m/s sideways
+  EXPECT_NEAR(decoded.body_velocity().x(), 0.1, 1e-6);
+  EXPECT_NEAR(decoded.body_velocity().y(), -0.04, 1e-6);
+  // a velocity on x makes the x position the integral of it (the seed: "in this direction"); y still moves
+  step.vel_des = {0.2f, 0.0f, 0.0f};
+  decoded = decode_user_gait_step(step);
+  EXPECT_EQ(decoded.position_offset_m.x(), 0.0);
+  EXPECT_NEAR(decoded.body_velocity().x(), 0.2, 1e-6);
+  EXPECT_NEAR(decoded.body_velocity().y(), -0.04, 1e-6);
+  // beyond the trunk's reach over planted feet: clamped
+  step.vel_des = {0.0f, 0.0f, 0.0f};
+  step.pos_des = {0.5f, -0.5f, 0.0f};
+  decoded = decode_user_gait_step(step);
+  EXPECT_DOUBLE_EQ(decoded.position_offset_m.x(), UserGaitRanges{}.offset_x.upper);
+  EXPECT_DOUBLE_EQ(decoded.position_offset_m.y(), UserGaitRanges{}.offset_y.lower);
+}
+
 TEST(UserGaitChecks, AFlightLongerThanThePronksIsRefusedWithItsSections) {
   UserGaitDefinition definition;
   definition.sections = {{{true, true, true, true}, 5},

@@ -35,6 +35,18 @@ TEST(UserGaitUpload, TheGaitReachesTheLoopOnlyOnceItsDefinitionAndParametersAreB
   EXPECT_EQ(upload.store().version(), 2u);
 }
 
+TEST(UserGaitUpload, AnAcceptedParametersFileSaysTheWbcWeightsAndUseMpcTrajAreNotUsed) {
+  UserGaitSlot slot;
+  UserGaitUpload upload(slot);
+  const UserGaitUploadResult parameters = upload.receive(kParameters);
+  ASSERT_TRUE(parameters.accepted) << parameters.detail;
+  EXPECT_NE(parameters.detail.find("acc_des (WBC weights) and value bit 0 (use_mpc_traj) not used"), std::string::npos)
+      << parameters.detail;
+  // a definition holds neither
+  const UserGaitUploadResult definition = upload.receive(kDefinition);
+  EXPECT_EQ(definition.detail.find("not used"), std::string::npos) << definition.detail;
+}
+
 TEST(UserGaitUpload, AFileThatDoesNotParseIsRefusedAndThePreviousGaitKept) {
   UserGaitSlot slot;
   UserGaitUpload upload(slot);

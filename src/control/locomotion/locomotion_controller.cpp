@@ -140,10 +140,11 @@ void LocomotionController::post_mpc(const RobotState& state) {
   in.contact = scheduler_.horizon_contacts<kMpcHorizon>();
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
   // a stand that leans instead of stepping holds the centre of mass over the middle of its feet,
-  // not where the trunk was when the stand began, and holds it there firmly
+  // not where the trunk was when the stand began, and holds it there firmly; a user step that
+  // moves the body by position holds it as firmly where its reference goes
   Eigen::Vector2d start_xy = position_des_;
-  in.hold_position = target_.stand_holds_position && stands_throughout(in.contact);
-  if (in.hold_position) {
+  in.hold_position = (target_.stand_holds_position || user.leans_to_position) && stands_throughout(in.contact);
+  if (in.hold_position && !user.leans_to_position) {
     Eigen::Vector3d centroid = Eigen::Vector3d::Zero();
     for (const Eigen::Vector3d& foot : state.foot_position_body) centroid += 0.25 * foot;
     // the robot's own centre (as the QP stand and the jumps place it), not the MPC's tuned offset

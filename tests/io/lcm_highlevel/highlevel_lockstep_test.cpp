@@ -360,6 +360,11 @@ TEST_F(HighLevelLockstep, UserGaitFilesAreAnsweredAndStored) {
       << log;
   EXPECT_NE(log.find("user_gait_file refused (result 1): wrong fingerprint packet of 124 bytes"), std::string::npos)
       << log;
+  // the fields the MC accepts and does not use are said where the upload is logged, not dropped silently
+  EXPECT_NE(log.find("user_gait_file stored (result 0), gait parameters: 1 steps, 300 ms (acc_des (WBC weights) and "
+                     "value bit 0 (use_mpc_traj) not used: no WBC here"),
+            std::string::npos)
+      << log;
 }
 
 class HighLevelKeepalive : public HighLevelLockstep {
