@@ -25,7 +25,7 @@ int sensor_address(const mjModel* model, const std::string& name, const std::str
 }  // namespace
 
 MujocoBackend::MujocoBackend(const MujocoBackendConfig& config)
-    : config_(config), battery_(config.battery), rng_(config.noise.seed) {
+    : config_(config), battery_(config.battery), main_board_(config.main_board), rng_(config.noise.seed) {
   if (!std::filesystem::is_regular_file(config.model_path)) {
     throw std::runtime_error("model file not found: " + config.model_path);
   }
@@ -107,6 +107,7 @@ SensorFrame MujocoBackend::read() {
     frame.motor_faults[i] |= motor_over_speed(data_->qvel[dof_address_[i]]);
   }
   frame.battery = battery_.reading();
+  frame.imu_temperature_c = main_board_.temperature_c();
   for (int k = 0; k < 4; ++k) frame.imu_quat[k] = data_->sensordata[imu_quat_address_ + k];
   for (int k = 0; k < 3; ++k) {
     frame.imu_gyro[k] = noisy(data_->sensordata[imu_gyro_address_ + k], noise.gyro_rad_s);
@@ -157,6 +158,7 @@ void MujocoBackend::update_power_and_heat(double dt_s) {
     motor_power_w += motor_electrical_power_w(applied_torque_[i], data_->qvel[dof_address_[i]]);
   }
   battery_.update(motor_power_w, dt_s);
+  main_board_.update(config_.battery.idle_power_w, dt_s);
   // the drivers' bus capacitors smooth the pack's voltage before their limits look at it
   bus_voltage_v_ += (battery_.reading().voltage_v - bus_voltage_v_) * std::min(1.0, dt_s / robot::kDriverBusFilterS);
   for (std::size_t i = 0; i < kNumJoints; ++i) {

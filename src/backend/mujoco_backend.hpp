@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "backend/battery_model.hpp"
+#include "backend/thermal_mass.hpp"
 #include "backend/motor_model.hpp"
 #include "backend/push_request.hpp"
 #include "backend/robot_backend.hpp"
@@ -34,6 +35,9 @@ struct MujocoBackendConfig {
   MotorLimits motor_limits;
   MotorThermalParameters thermal;
   BatteryParameters battery;
+  // the main board, where the IMU sits; warmed by the boards' idle power (battery.idle_power_w)
+  ThermalMassParameters main_board{robot::kAmbientTemperatureC, robot::kMainBoardThermalResistanceKPerW,
+                                   robot::kMainBoardHeatCapacityJPerK};
 };
 
 // the MC runs on it as a RobotBackend; tools and tests see it as a Simulation
@@ -95,6 +99,7 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   bool sensors_stale_ = false;
   std::vector<MotorThermalModel> thermal_;
   BatteryModel battery_;
+  ThermalMass main_board_;
   JointArray<std::uint32_t> motor_faults_{};  // what each driver reports (and stops on)
   double bus_voltage_v_ = 0.0;                // the pack's voltage as the drivers see it (filtered)
   std::mt19937 rng_;

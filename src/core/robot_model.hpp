@@ -63,6 +63,13 @@ inline constexpr double kBatteryCapacityAh = 4.5;
 // 60-80 A, which a 0.12 ohm pack (20 mOhm cells) would sag below the drivers' 18 V cut-off
 inline constexpr double kBatteryInternalResistanceOhm = 0.06;
 inline constexpr double kIdleElectricalPowerW = 25.0;     // assumed: boards, sensors, fans
+
+// the air around the robot, where every simulated part starts and cools to
+inline constexpr double kAmbientTemperatureC = 25.0;
+// assumed: the IMU sits on the main board inside the trunk and its temperature sensor reads the
+// board, which the idle power warms 15 K above the ambient with a 5 min time constant
+inline constexpr double kMainBoardThermalResistanceKPerW = 0.6;
+inline constexpr double kMainBoardHeatCapacityJPerK = 500.0;
 inline constexpr double kDriverUnderVoltageV = 18.0;      // assumed: 3.0 V per cell
 inline constexpr double kDriverOverVoltageV = 26.0;       // assumed: above a full pack's 25.2 V
 inline constexpr double kDriverVoltageHysteresisV = 0.5;  // assumed: a tripped limit clears this far inside

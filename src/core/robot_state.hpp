@@ -18,6 +18,7 @@ struct RobotState {
   JointArray<double> qd{};
   JointArray<double> tau{};
   JointArray<double> temperature_c{};
+  double imu_temperature_c = 0.0;  // the IMU chip's own sensor, as it reads
   JointArray<std::uint32_t> motor_faults{};                    // MotorFault bits as the drivers report them
   JointArray<MotorDriverMode> driver_mode = all_motor_mode();  // as the drivers report it
   BatteryReading battery;

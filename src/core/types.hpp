@@ -26,6 +26,7 @@ struct SensorFrame {
   std::array<double, 4> imu_quat{1.0, 0.0, 0.0, 0.0};  // w, x, y, z, body to world
   std::array<double, 3> imu_gyro{};                    // rad/s, body frame
   std::array<double, 3> imu_accel{};                   // m/s^2, body frame, includes gravity
+  double imu_temperature_c = 0.0;                      // the IMU chip's own sensor
   JointArray<std::uint32_t> motor_faults{};            // MotorFault bits per motor
   // each driver's mode; a backend that cannot tell reports motor mode (the healthy running state)
   JointArray<MotorDriverMode> driver_mode = all_motor_mode();

@@ -43,6 +43,7 @@ void KinematicEstimator::update(const SensorFrame& frame, const ContactPlan& /*p
   state.qd = frame.qd;
   state.tau = frame.tau;
   state.temperature_c = frame.temperature_c;
+  state.imu_temperature_c = frame.imu_temperature_c;
 
   // orientation straight from the IMU's attitude solution
   Eigen::Quaterniond orientation(frame.imu_quat[0], frame.imu_quat[1], frame.imu_quat[2], frame.imu_quat[3]);

@@ -98,9 +98,9 @@ AlienGoFeedback make_feedback(const RobotState& state, int mode, const SportFram
   // the accelerometer as it reads: the specific force (gravity included), body frame
   f.accelerometer = state.specific_force_body;
   f.rpy = state.rpy;
-  // the simulated IMU has no thermal model: the coolest motor, the body's inside temperature
-  f.temperature_c =
-      static_cast<int>(std::lround(*std::min_element(state.temperature_c.begin(), state.temperature_c.end())));
+  // the IMU's own sensor; an unreadable one reads 0 (the wire's i8 has no "unknown")
+  const double imu_c = state.imu_temperature_c;
+  f.temperature_c = std::isfinite(imu_c) ? static_cast<int>(std::lround(std::clamp(imu_c, -128.0, 127.0))) : 0;
   // the odometry (it drifts, as on the robot) in the sport frame: from its origin, turned by its yaw
   const Eigen::Vector3d from_origin =
       state.position_world - Eigen::Vector3d(frame.origin[0], frame.origin[1], frame.origin[2]);
