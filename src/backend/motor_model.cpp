@@ -37,13 +37,12 @@ std::uint32_t motor_over_speed(double joint_velocity_rad_s) {
 }
 
 MotorThermalModel::MotorThermalModel(const MotorThermalParameters& parameters)
-    : parameters_(parameters), temperature_c_(parameters.ambient_c) {}
+    : parameters_(parameters), winding_(parameters.winding) {}
 
 void MotorThermalModel::update(double joint_torque_nm, double dt_s) {
   const double current_a = joint_torque_nm / (parameters_.gear_ratio * parameters_.torque_constant_nm_per_a);
   const double heating_w = current_a * current_a * parameters_.winding_resistance_ohm;
-  const double cooling_w = (temperature_c_ - parameters_.ambient_c) / parameters_.thermal_resistance_k_per_w;
-  temperature_c_ += (heating_w - cooling_w) * dt_s / parameters_.heat_capacity_j_per_k;
+  winding_.update(heating_w, dt_s);
 }
 
 }  // namespace cerebellum

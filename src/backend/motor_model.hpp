@@ -5,6 +5,7 @@
 #include <cstdint>
 
 #include "core/motor_health.hpp"
+#include "backend/thermal_mass.hpp"
 #include "core/robot_model.hpp"
 
 namespace cerebellum {
@@ -24,9 +25,7 @@ double motor_law_torque(double q_des, double qd_des, double kp, double kd, doubl
 double limit_motor_torque(double tau_nm, double qd_rad_s, const MotorLimits& limits);
 
 struct MotorThermalParameters {
-  double ambient_c = 25.0;
-  double thermal_resistance_k_per_w = 1.2;  // winding to ambient
-  double heat_capacity_j_per_k = 60.0;
+  ThermalMassParameters winding{robot::kAmbientTemperatureC, 1.2, 60.0};  // winding to ambient
   double gear_ratio = robot::kGearRatio;
   double torque_constant_nm_per_a = robot::kMotorKt;  // motor side
   double winding_resistance_ohm = robot::kMotorResistanceOhm;
@@ -47,11 +46,11 @@ class MotorThermalModel {
  public:
   explicit MotorThermalModel(const MotorThermalParameters& parameters);
   void update(double joint_torque_nm, double dt_s);
-  double temperature_c() const { return temperature_c_; }
+  double temperature_c() const { return winding_.temperature_c(); }
 
  private:
   MotorThermalParameters parameters_;
-  double temperature_c_;
+  ThermalMass winding_;
 };
 
 }  // namespace cerebellum

@@ -39,11 +39,11 @@ TEST(MotorThermal, HeatsTowardsTheSteadyStateOfCopperLoss) {
   MotorThermalModel model(p);
   // 3.875 N m joint torque = 0.5 N m motor torque = 10 A; 100 A^2 * 0.173 ohm = 17.3 W
   for (int i = 0; i < 2000000; ++i) model.update(3.875, 0.001);
-  const double steady = p.ambient_c + 17.3 * p.thermal_resistance_k_per_w;
+  const double steady = p.winding.ambient_c + 17.3 * p.winding.thermal_resistance_k_per_w;
   EXPECT_NEAR(model.temperature_c(), steady, 0.05);
   MotorThermalModel idle(p);
   idle.update(0.0, 10.0);
-  EXPECT_DOUBLE_EQ(idle.temperature_c(), p.ambient_c);
+  EXPECT_DOUBLE_EQ(idle.temperature_c(), p.winding.ambient_c);
 }
 
 }  // namespace
