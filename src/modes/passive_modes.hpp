@@ -23,7 +23,7 @@ class OffMode final : public Mode {
 
 struct PureDamperConfig {
   double damping_kd = robot::kDampingKd;  // gait 0: joint damping, the robot sinks by itself
-  double lie_down_duration_s = 1.5;       // gait 1: joints driven to the lying pose over this time
+  double lie_down_duration_s = 1.0;       // gait 1: joints driven to the lying pose over this time
   double lie_down_kp = 40.0;
   double lie_down_kd = 2.0;
   std::array<double, 3> lying_pose;  // abad, hip, knee (SDK convention)
