@@ -136,6 +136,54 @@ INSTANTIATE_TEST_SUITE_P(FifteenNewtons, PassiveTrotPull,
                                            PullCase{-15.0, 0.0, 33}, PullCase{0.0, 15.0, 34},
                                            PullCase{10.6, -10.6, 35}));
 
+// As a client does it (12, then 11/4 as soon as the stand reports bar >= 95): a pull of 1-4 s
+// started 0.5-5 s after entering gait 4; released, it stands within 1.5 s every time. With the
+// 5 cm steps `cerebellum cmd walk --gait 4` asks for, the trot in place used to keep itself going
+// (issue 47: its force estimate stayed above the old 5 N stop threshold)
+struct LatePullCase {
+  double wait_s;  // after entering gait 4
+  double pull_s;
+  float step_height_m;  // 0: the gait's own
+  unsigned noise_seed;  // 0: no sensor noise
+};
+
+class PassiveTrotLatePull : public ::testing::TestWithParam<LatePullCase> {};
+
+TEST_P(PassiveTrotLatePull, ReleasedItStandsWithinOneAndAHalfSecondsHoweverLongAfterEnteringAndPulled) {
+  const LatePullCase c = GetParam();
+  ModeSim sim(ModeId::Off, 0.3, c.noise_seed != 0, c.noise_seed);
+  sim.run(0.5);
+  sim.send(command(ModeId::RecoveryStand), 0.0);
+  ASSERT_GT(sim.run_until([&] { return sim.status().order_process_bar >= 95; }, 10.0), 0.0);
+  HighLevelCommand trot = passive_trot();
+  trot.step_height = {c.step_height_m, c.step_height_m};
+  sim.send(trot, c.wait_s);
+  ASSERT_EQ(sim.status().gait_id, kPassiveTrotGaitId);
+  sim.backend.request_force_pulse({{15.0, 0.0, 0.0}, c.pull_s});
+  const Watch pulled = watch(sim, c.pull_s);
+  ASSERT_TRUE(pulled.stayed_up);
+  ASSERT_GT(pulled.longest_lift_s, 0.1) << "it did not step along the pull";
+  double stood_since_s = -1.0;
+  const double release_s = sim.time_s();
+  while (sim.time_s() < release_s + 3.0 - 1e-9) {
+    sim.run(0.002);
+    const GroundTruth t = sim.backend.ground_truth();
+    const bool standing = all_feet_down(sim) && std::hypot(t.velocity_world[0], t.velocity_world[1]) < 0.15;
+    if (!standing) stood_since_s = -1.0;
+    if (standing && stood_since_s < 0.0) stood_since_s = sim.time_s();
+    ASSERT_TRUE(upright(sim));
+  }
+  ASSERT_GE(stood_since_s, 0.0) << "still stepping 3 s after the release";
+  EXPECT_LE(stood_since_s - release_s, 1.5);
+  EXPECT_FALSE(sim.modes.passive_trot().follow().following());
+}
+
+INSTANTIATE_TEST_SUITE_P(WaitsPullsAndStepHeights, PassiveTrotLatePull,
+                         ::testing::Values(LatePullCase{0.5, 1.0, 0.05f, 0}, LatePullCase{0.5, 4.0, 0.05f, 0},
+                                           LatePullCase{2.0, 1.0, 0.05f, 0}, LatePullCase{2.0, 3.0, 0.05f, 0},
+                                           LatePullCase{5.0, 4.0, 0.05f, 0}, LatePullCase{3.0, 2.0, 0.05f, 41},
+                                           LatePullCase{1.0, 3.0, 0.0f, 42}, LatePullCase{5.0, 1.0, 0.0f, 0}));
+
 TEST(PassiveTrotSim, CommandedVelocityStillWalksIt) {
   ModeSim sim;
   stand_in_passive_trot(sim);

@@ -57,7 +57,7 @@ Eigen::Vector2d PassiveFollow::update(const RobotState& state, double dt_s) {
   }
   if (following_) {
     velocity_ += (drive - config_.damping_n_s_per_m * velocity_) * (dt_s / config_.virtual_mass_kg);
-    const bool quiet = magnitude < config_.stop_force_n && velocity_.norm() < config_.stop_speed_m_s;
+    const bool quiet = magnitude < config_.start_force_n && velocity_.norm() < config_.stop_speed_m_s;
     quiet_s_ = quiet ? quiet_s_ + dt_s : 0.0;
     if (quiet_s_ >= config_.stop_hold_s) {
       following_ = false;

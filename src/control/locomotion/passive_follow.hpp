@@ -26,8 +26,11 @@ struct PassiveFollowConfig {
   // admittance: velocity = force / damping at steady state, reached with mass / damping
   double damping_n_s_per_m = 30.0;
   double virtual_mass_kg = 6.0;
-  // left alone (force and follow velocity below these for stop_hold_s): stand again
-  double stop_force_n = 5.0;
+  // left alone (follow velocity below stop_speed_m_s and the force below start_force_n for
+  // stop_hold_s): stand again. The force test is the start's: trotting in place, the estimate
+  // carries a few newtons the standing bias does not take off (the swinging legs' reactions), and
+  // a lower stop threshold inside that error kept the trot going by itself (issue 47); what would
+  // not start a trot does not keep one going, and a real pull still does through the velocity
   double stop_speed_m_s = 0.06;
   double stop_hold_s = 0.25;
 };
