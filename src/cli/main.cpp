@@ -4,6 +4,7 @@
 #include <vector>
 
 #include "cli/cmd_command.hpp"
+#include "cli/drive_command.hpp"
 #include "cli/gait_command.hpp"
 #include "cli/log_command.hpp"
 #include "cli/fault_command.hpp"
@@ -17,6 +18,7 @@ constexpr const char* kUsage =
     "commands:\n"
     "  sim    run the MC on the simulated CyberDog2 (cerebellum sim --help)\n"
     "  cmd    send a high-level command to a running MC and keep it alive (cerebellum cmd --help)\n"
+    "  drive  drive a running MC with a gamepad (cerebellum drive --help)\n"
     "  status print the MC's high-level responses and odometry (cerebellum status --help)\n"
     "  log    record the interface's LCM traffic, one lcm-logger per port (cerebellum log --help)\n"
     "  replay play a recorded log back on its ports (cerebellum replay --help)\n"
@@ -35,6 +37,7 @@ int main(int argc, char** argv) {
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (args[0] == "sim") return cerebellum::run_sim_command(rest);
   if (args[0] == "cmd") return cerebellum::run_cmd_command(rest);
+  if (args[0] == "drive") return cerebellum::run_drive_command(rest);
   if (args[0] == "status") return cerebellum::run_status_command(rest);
   if (args[0] == "log") return cerebellum::run_log_command(rest);
   if (args[0] == "replay") return cerebellum::run_replay_command(rest);
@@ -42,7 +45,7 @@ int main(int argc, char** argv) {
   if (args[0] == "fault") return cerebellum::run_fault_command(rest);
   if (args[0] == "gait") return cerebellum::run_gait_command(rest);
   std::fprintf(stderr,
-               "cerebellum: unknown command '%s' (accepted: sim, cmd, status, log, replay, push, fault, gait)\n%s",
+               "cerebellum: unknown command '%s' (accepted: sim, cmd, drive, status, log, replay, push, fault, gait)\n%s",
                args[0].c_str(), kUsage);
   return 2;
 }

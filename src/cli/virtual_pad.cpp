@@ -1,0 +1,62 @@
+#include "cli/virtual_pad.hpp"
+
+#include <SDL.h>
+
+#include <cmath>
+#include <stdexcept>
+#include <string>
+
+namespace cerebellum {
+
+VirtualPad::VirtualPad(std::vector<VirtualPadEvent> script) : script_(std::move(script)) {
+  for (const VirtualPadEvent& event : script_) {
+    if (!event.control.empty() && SDL_GameControllerGetButtonFromString(event.control.c_str()) ==
+                                      SDL_CONTROLLER_BUTTON_INVALID &&
+        SDL_GameControllerGetAxisFromString(event.control.c_str()) == SDL_CONTROLLER_AXIS_INVALID) {
+      throw std::invalid_argument("virtual pad script: '" + event.control +
+                                  "' is no SDL game-controller button or axis (a, b, x, y, leftshoulder, leftx, ...)");
+    }
+  }
+  // a game-controller-typed virtual joystick: SDL gives it the standard mapping, button i and axis
+  // i being SDL_GameControllerButton i and SDL_GameControllerAxis i
+  SDL_VirtualJoystickDesc desc{};
+  desc.version = SDL_VIRTUAL_JOYSTICK_DESC_VERSION;
+  desc.type = SDL_JOYSTICK_TYPE_GAMECONTROLLER;
+  desc.naxes = SDL_CONTROLLER_AXIS_MAX;
+  desc.nbuttons = SDL_CONTROLLER_BUTTON_MAX;
+  desc.name = "cerebellum virtual pad";
+  device_index_ = SDL_JoystickAttachVirtualEx(&desc);
+  if (device_index_ < 0) throw std::runtime_error(std::string("cannot attach a virtual pad: ") + SDL_GetError());
+  joystick_ = SDL_JoystickOpen(device_index_);
+  if (joystick_ == nullptr) throw std::runtime_error(std::string("cannot open the virtual pad: ") + SDL_GetError());
+  plugged_at_ = std::chrono::steady_clock::now();
+}
+
+VirtualPad::~VirtualPad() { unplug(); }
+
+void VirtualPad::unplug() {
+  if (joystick_ == nullptr) return;
+  SDL_JoystickClose(joystick_);
+  SDL_JoystickDetachVirtual(device_index_);
+  joystick_ = nullptr;
+}
+
+void VirtualPad::play() {
+  const double elapsed_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - plugged_at_).count();
+  for (; next_ < script_.size() && script_[next_].at_s <= elapsed_s && joystick_ != nullptr; ++next_) {
+    const VirtualPadEvent& event = script_[next_];
+    if (event.control.empty()) {
+      unplug();
+      return;
+    }
+    const SDL_GameControllerButton button = SDL_GameControllerGetButtonFromString(event.control.c_str());
+    if (button != SDL_CONTROLLER_BUTTON_INVALID) {
+      SDL_JoystickSetVirtualButton(joystick_, button, event.value > 0.5 ? SDL_PRESSED : SDL_RELEASED);
+    } else {
+      const SDL_GameControllerAxis axis = SDL_GameControllerGetAxisFromString(event.control.c_str());
+      SDL_JoystickSetVirtualAxis(joystick_, axis, static_cast<Sint16>(std::lround(event.value * 32767.0)));
+    }
+  }
+}
+
+}  // namespace cerebellum
