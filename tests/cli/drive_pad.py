@@ -8,7 +8,9 @@ Judged on the simulation's truth (sim_truth) and the MC's responses:
    on the truth between 3 s and 8 s of walking, along the trunk's heading. Unplugged while walking:
    drive sends the stop and ends, the robot is still 1.5 s later.
 2. drive_walk_damp.pad (a new drive, the robot damped by the first one's silence): A, the stick full
-   forward, then B while walking: the MC reports mode 7 gait 0.
+   forward, then B while walking: the MC reports mode 7 gait 0 within a second.
+3. drive_damp_every_mode.pad: B from a stand (12), from a motion (62) and from a jump (16) under way:
+   mode 7 gait 0 within a second each time.
 
     PYTHONPATH=<generated python types> drive_pad.py <cerebellum> <walk-unplug script> <walk-damp script>
 """
@@ -28,7 +30,7 @@ WALK_START_S = 6.0      # the scripts' stick
 UNPLUG_S = 14.0
 EXPECTED_SPEED_M_S = 0.3
 SPEED_TOLERANCE = 0.25  # of the expected speed
-DAMP_PRESS_S = 9.0
+DAMP_PRESS_S = 9.0      # drive_walk_damp.pad
 
 
 def heading(q):
@@ -92,22 +94,25 @@ def walk_and_unplug(exe, script):
         sys.exit("drive_pad: the robot did not stop after the pad was unplugged")
 
 
-def walk_and_damp(exe, script):
-    _, responses, _ = run_drive(exe, script, DAMP_PRESS_S + 3.0)
-    walking = [r for at, r in responses if WALK_START_S + 1.0 <= at < DAMP_PRESS_S and r.mode == 11]
-    # within a second of the press: the heartbeat timeout after the unplug (2 s later) damps too
-    damped = [at for at, r in responses if DAMP_PRESS_S <= at <= DAMP_PRESS_S + 1.0 and r.mode == 7 and r.gait_id == 0]
-    if not walking:
-        sys.exit("drive_pad: the robot was not walking before the damp button")
-    if not damped:
-        sys.exit("drive_pad: the damp button did not bring mode 7")
-    print("drive_pad: damp button while walking: mode 7 after %.2f s" % (damped[0] - DAMP_PRESS_S))
+def damp_from(exe, script, presses, seconds):
+    """presses: (the script's time of B, the mode running just before it)"""
+    _, responses, _ = run_drive(exe, script, seconds)
+    for press_s, mode in presses:
+        before = [r.mode for at, r in responses if press_s - 0.3 <= at < press_s]
+        # within a second of the press: later the heartbeat timeout after the unplug damps too
+        damped = [at for at, r in responses if press_s <= at <= press_s + 1.0 and r.mode == 7 and r.gait_id == 0]
+        if not before or before[-1] != mode:
+            sys.exit("drive_pad: mode %d was not running before the damp button at %.1f s (%s)" % (mode, press_s, before))
+        if not damped:
+            sys.exit("drive_pad: the damp button in mode %d did not bring mode 7" % mode)
+        print("drive_pad: damp button in mode %d: mode 7 after %.2f s" % (mode, damped[0] - press_s))
 
 
 def main():
-    exe, walk_unplug, walk_damp = sys.argv[1], sys.argv[2], sys.argv[3]
+    exe, walk_unplug, walk_damp, damp_every_mode = sys.argv[1:5]
     walk_and_unplug(exe, walk_unplug)
-    walk_and_damp(exe, walk_damp)
+    damp_from(exe, walk_damp, [(DAMP_PRESS_S, 11)], DAMP_PRESS_S + 3.0)
+    damp_from(exe, damp_every_mode, [(5.0, 12), (12.0, 62), (18.0, 16)], 20.5)
     print("drive_pad: ok")
 
 
