@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "control/locomotion/gait_table.hpp"
+#include "modes/command_ranges.hpp"
 #include "modes/jump_mode.hpp"
 
 namespace cerebellum {
@@ -72,8 +73,10 @@ bool sticks_drive_from(const HighLevelCommand& last) {
 }
 
 bool stick_moved(const PadState& pad) {
-  return stick_after_dead_zone(pad.left_x) != 0.0 || stick_after_dead_zone(pad.left_y) != 0.0 ||
-         stick_after_dead_zone(pad.right_x) != 0.0;
+  for (const double axis : {pad.left_x, pad.left_y, pad.right_x, pad.right_y, pad.left_trigger, pad.right_trigger}) {
+    if (stick_after_dead_zone(axis) != 0.0) return true;
+  }
+  return false;
 }
 
 // a deflection in [-1, 1] onto the gait's range: full forward is the gait's max, full back its min
@@ -81,7 +84,7 @@ double scale(double deflection, double min, double max) { return deflection >= 0
 
 bool same_command(const HighLevelCommand& a, const HighLevelCommand& b) {
   return a.mode == b.mode && a.gait_id == b.gait_id && a.contact == b.contact && a.vel_des == b.vel_des &&
-         a.step_height == b.step_height && a.value == b.value && a.duration == b.duration;
+         a.rpy_des == b.rpy_des && a.pos_des == b.pos_des && a.step_height == b.step_height && a.value == b.value && a.duration == b.duration;
 }
 
 }  // namespace
@@ -109,6 +112,13 @@ HighLevelCommand PadMapping::walk(const PadState& pad) const {
   command.vel_des[0] = static_cast<float>(scale(forward, gait.velocity_min[0], gait.velocity_max[0]));
   command.vel_des[1] = static_cast<float>(scale(left, gait.velocity_min[1], gait.velocity_max[1]));
   command.vel_des[2] = static_cast<float>(scale(turn_left, gait.velocity_min[2], gait.velocity_max[2]));
+  // mode 11's body pose: the right stick up raises the head (rpy_des[1] > 0), the right trigger
+  // raises the body to the top of the range, the left one lowers it to the bottom
+  const LocomotionStandRanges pose;
+  command.rpy_des[1] = static_cast<float>(scale(stick_after_dead_zone(pad.right_y), pose.pitch.lower, pose.pitch.upper));
+  command.pos_des[2] = static_cast<float>(
+      pose.default_height_m + stick_after_dead_zone(pad.right_trigger) * (pose.height.upper - pose.default_height_m) -
+      stick_after_dead_zone(pad.left_trigger) * (pose.default_height_m - pose.height.lower));
   command.step_height = {static_cast<float>(gait.default_step_height_m), static_cast<float>(gait.default_step_height_m)};
   return command;
 }
@@ -143,7 +153,7 @@ DriveStep PadMapping::next(const PadState& pad) {
 DriveStep PadMapping::stop() {
   if (!sent_any_) return {};
   HighLevelCommand still = last_;
-  still.vel_des = {};
+  still.vel_des = {};  // the pose stays: only moving is stopped
   return emit(still);
 }
 
@@ -153,7 +163,11 @@ std::string pad_mapping_help() {
   std::snprintf(line, sizeof line, "  left stick   forward/back, sideways (the gait's limits; dead zone %.0f %%)\n",
                 kStickDeadZone * 100.0);
   out += line;
-  out += "  right stick  x: yaw rate\n";
+  out += "  right stick  x: yaw rate; y: pitch (up: head up)\n";
+  const LocomotionStandRanges pose;
+  std::snprintf(line, sizeof line, "  RT / LT      body height up / down (%.2f..%.2f m; released %.3f m)\n",
+                pose.height.lower, pose.height.upper, pose.default_height_m);
+  out += line;
   out += "  released     zero velocity (the robot trots in place; A stands it still)\n";
   for (const ButtonBinding& binding : kButtonBindings) {
     std::string what = binding.what;

@@ -16,12 +16,15 @@ enum class PadButton : std::size_t { A, B, X, Y, LeftShoulder, RightShoulder, Co
 inline constexpr std::size_t kPadButtonCount = static_cast<std::size_t>(PadButton::Count);
 
 // one sample of the pad. Sticks in [-1, 1], pushed up and pushed right positive (the SDL edge
-// flips SDL's y axis, which reads down positive). pressed: went down since the previous sample, so
-// a press shorter than the sampling period is not lost
+// flips SDL's y axis, which reads down positive); triggers in [0, 1], 0 released. pressed: went down
+// since the previous sample, so a press shorter than the sampling period is not lost
 struct PadState {
   double left_x = 0.0;
   double left_y = 0.0;
   double right_x = 0.0;
+  double right_y = 0.0;
+  double left_trigger = 0.0;
+  double right_trigger = 0.0;
   std::array<bool, kPadButtonCount> pressed{};
 };
 

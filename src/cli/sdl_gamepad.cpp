@@ -80,6 +80,9 @@ PadState SdlGamepad::sample() {
     pad.left_x = axis(controller_, SDL_CONTROLLER_AXIS_LEFTX);
     pad.left_y = -axis(controller_, SDL_CONTROLLER_AXIS_LEFTY);  // SDL reads pushed forward as negative
     pad.right_x = axis(controller_, SDL_CONTROLLER_AXIS_RIGHTX);
+    pad.right_y = -axis(controller_, SDL_CONTROLLER_AXIS_RIGHTY);
+    pad.left_trigger = axis(controller_, SDL_CONTROLLER_AXIS_TRIGGERLEFT);  // SDL: 0 released .. 32767
+    pad.right_trigger = axis(controller_, SDL_CONTROLLER_AXIS_TRIGGERRIGHT);
   }
   pad.pressed = pressed_;
   pressed_ = {};

@@ -93,6 +93,29 @@ TEST(PadMapping, StickRightMeansMovingAndTurningRightWhichAreNegativeYAndYaw) {
   EXPECT_FLOAT_EQ(left.command.vel_des[2], 1.3f);
 }
 
+TEST(PadMapping, RightStickUpRaisesTheHeadAndTheTriggersSetTheBodyHeightInModeElevensRanges) {
+  // mode 11: pitch -0.25..0.3 rad (+: head up), height 0.2..0.28 m, 0.235 m by default
+  PadMapping mapping;
+  mapping.next(press(PadButton::A));
+  PadState pad;
+  pad.right_y = 1.0;
+  const DriveStep up = mapping.next(pad);
+  EXPECT_TRUE(up.is_new);
+  EXPECT_EQ(up.command.mode, 11);
+  EXPECT_FLOAT_EQ(up.command.rpy_des[1], 0.3f);
+  EXPECT_FLOAT_EQ(up.command.pos_des[2], 0.235f);
+  EXPECT_EQ(up.command.vel_des, (std::array<float, 3>{0.0f, 0.0f, 0.0f}));
+  pad.right_y = -1.0;
+  pad.right_trigger = 1.0;
+  const DriveStep high = mapping.next(pad);
+  EXPECT_FLOAT_EQ(high.command.rpy_des[1], -0.25f);
+  EXPECT_FLOAT_EQ(high.command.pos_des[2], 0.28f);
+  pad = PadState{};
+  pad.left_trigger = 1.0;
+  EXPECT_FLOAT_EQ(mapping.next(pad).command.pos_des[2], 0.2f);
+  EXPECT_FLOAT_EQ(mapping.next(PadState{}).command.pos_des[2], 0.235f);  // released: the default height
+}
+
 TEST(PadMapping, TheDeadZoneIsZeroAndTheDriveStartsFromZeroAtItsEdge) {
   EXPECT_EQ(stick_after_dead_zone(0.1), 0.0);
   EXPECT_EQ(stick_after_dead_zone(-0.15), 0.0);
