@@ -44,8 +44,9 @@ int main(int argc, char** argv) {
   if (args[0] == "push") return cerebellum::run_push_command(rest);
   if (args[0] == "fault") return cerebellum::run_fault_command(rest);
   if (args[0] == "gait") return cerebellum::run_gait_command(rest);
-  std::fprintf(stderr,
-               "cerebellum: unknown command '%s' (accepted: sim, cmd, drive, status, log, replay, push, fault, gait)\n%s",
-               args[0].c_str(), kUsage);
+  std::fprintf(
+      stderr,
+      "cerebellum: unknown command '%s' (accepted: sim, cmd, drive, status, log, replay, push, fault, gait)\n%s",
+      args[0].c_str(), kUsage);
   return 2;
 }

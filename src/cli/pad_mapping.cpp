@@ -49,18 +49,12 @@ HighLevelCommand mode_command(ModeId mode, int gait_id) {
 
 HighLevelCommand action_command(PadAction action) {
   switch (action) {
-    case PadAction::Damp:
-      return mode_command(ModeId::PureDamper, 0);
-    case PadAction::Stand:
-      return mode_command(ModeId::RecoveryStand, 0);
-    case PadAction::LieDown:
-      return mode_command(ModeId::PureDamper, 1);
-    case PadAction::Motion:
-      return mode_command(ModeId::Motion, kPadMotionId);
-    case PadAction::Jump:
-      return mode_command(ModeId::Jump3d, kPadJumpId);
-    case PadAction::NextGait:
-      break;  // built from the sticks
+    case PadAction::Damp: return mode_command(ModeId::PureDamper, 0);
+    case PadAction::Stand: return mode_command(ModeId::RecoveryStand, 0);
+    case PadAction::LieDown: return mode_command(ModeId::PureDamper, 1);
+    case PadAction::Motion: return mode_command(ModeId::Motion, kPadMotionId);
+    case PadAction::Jump: return mode_command(ModeId::Jump3d, kPadJumpId);
+    case PadAction::NextGait: break;  // built from the sticks
   }
   return {};
 }
@@ -80,11 +74,14 @@ bool stick_moved(const PadState& pad) {
 }
 
 // a deflection in [-1, 1] onto the gait's range: full forward is the gait's max, full back its min
-double scale(double deflection, double min, double max) { return deflection >= 0.0 ? deflection * max : -deflection * min; }
+double scale(double deflection, double min, double max) {
+  return deflection >= 0.0 ? deflection * max : -deflection * min;
+}
 
 bool same_command(const HighLevelCommand& a, const HighLevelCommand& b) {
   return a.mode == b.mode && a.gait_id == b.gait_id && a.contact == b.contact && a.vel_des == b.vel_des &&
-         a.rpy_des == b.rpy_des && a.pos_des == b.pos_des && a.step_height == b.step_height && a.value == b.value && a.duration == b.duration;
+         a.rpy_des == b.rpy_des && a.pos_des == b.pos_des && a.step_height == b.step_height && a.value == b.value &&
+         a.duration == b.duration;
 }
 
 }  // namespace
@@ -115,11 +112,13 @@ HighLevelCommand PadMapping::walk(const PadState& pad) const {
   // mode 11's body pose: the right stick up raises the head (rpy_des[1] > 0), the right trigger
   // raises the body to the top of the range, the left one lowers it to the bottom
   const LocomotionStandRanges pose;
-  command.rpy_des[1] = static_cast<float>(scale(stick_after_dead_zone(pad.right_y), pose.pitch.lower, pose.pitch.upper));
+  command.rpy_des[1] =
+      static_cast<float>(scale(stick_after_dead_zone(pad.right_y), pose.pitch.lower, pose.pitch.upper));
   command.pos_des[2] = static_cast<float>(
       pose.default_height_m + stick_after_dead_zone(pad.right_trigger) * (pose.height.upper - pose.default_height_m) -
       stick_after_dead_zone(pad.left_trigger) * (pose.default_height_m - pose.height.lower));
-  command.step_height = {static_cast<float>(gait.default_step_height_m), static_cast<float>(gait.default_step_height_m)};
+  command.step_height = {static_cast<float>(gait.default_step_height_m),
+                         static_cast<float>(gait.default_step_height_m)};
   return command;
 }
 

@@ -10,9 +10,12 @@ namespace cerebellum {
 namespace {
 
 // the SDL button of each PadButton, in PadButton's order
-constexpr std::array<SDL_GameControllerButton, kPadButtonCount> kSdlButtons{
-    SDL_CONTROLLER_BUTTON_A, SDL_CONTROLLER_BUTTON_B, SDL_CONTROLLER_BUTTON_X, SDL_CONTROLLER_BUTTON_Y,
-    SDL_CONTROLLER_BUTTON_LEFTSHOULDER, SDL_CONTROLLER_BUTTON_RIGHTSHOULDER};
+constexpr std::array<SDL_GameControllerButton, kPadButtonCount> kSdlButtons{SDL_CONTROLLER_BUTTON_A,
+                                                                            SDL_CONTROLLER_BUTTON_B,
+                                                                            SDL_CONTROLLER_BUTTON_X,
+                                                                            SDL_CONTROLLER_BUTTON_Y,
+                                                                            SDL_CONTROLLER_BUTTON_LEFTSHOULDER,
+                                                                            SDL_CONTROLLER_BUTTON_RIGHTSHOULDER};
 
 std::optional<std::size_t> pad_button(Uint8 sdl_button) {
   for (std::size_t i = 0; i < kSdlButtons.size(); ++i) {
@@ -69,8 +72,7 @@ PadEvent SdlGamepad::poll() {
         return PadEvent::Pressed;
       }
       return PadEvent::None;
-    default:
-      return PadEvent::None;
+    default: return PadEvent::None;
   }
 }
 

@@ -10,8 +10,8 @@ namespace cerebellum {
 
 VirtualPad::VirtualPad(std::vector<VirtualPadEvent> script) : script_(std::move(script)) {
   for (const VirtualPadEvent& event : script_) {
-    if (!event.control.empty() && SDL_GameControllerGetButtonFromString(event.control.c_str()) ==
-                                      SDL_CONTROLLER_BUTTON_INVALID &&
+    if (!event.control.empty() &&
+        SDL_GameControllerGetButtonFromString(event.control.c_str()) == SDL_CONTROLLER_BUTTON_INVALID &&
         SDL_GameControllerGetAxisFromString(event.control.c_str()) == SDL_CONTROLLER_AXIS_INVALID) {
       throw std::invalid_argument("virtual pad script: '" + event.control +
                                   "' is no SDL game-controller button or axis (a, b, x, y, leftshoulder, leftx, ...)");

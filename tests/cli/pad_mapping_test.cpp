@@ -49,8 +49,8 @@ TEST(PadMapping, EachButtonSendsItsMode) {
 }
 
 TEST(PadMapping, DampWinsOverEveryOtherButtonPressedInTheSameSampleAndWorksFromEveryMode) {
-  for (const PadButton before : {PadButton::A, PadButton::X, PadButton::Y, PadButton::RightShoulder,
-                                 PadButton::LeftShoulder}) {
+  for (const PadButton before :
+       {PadButton::A, PadButton::X, PadButton::Y, PadButton::RightShoulder, PadButton::LeftShoulder}) {
     PadMapping mapping;
     mapping.next(press(before));
     PadState all;
