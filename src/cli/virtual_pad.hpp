@@ -14,8 +14,9 @@ namespace cerebellum {
 
 class VirtualPad {
  public:
-  // attaches the pad (SDL must be started: SdlGamepad); throws std::runtime_error with SDL's reason,
-  // std::invalid_argument for a control SDL does not name
+  // checks the script's controls (std::invalid_argument for a name SDL does not know) and, when it
+  // has no plug line, plugs the pad now (SDL must be started: SdlGamepad); std::runtime_error with
+  // SDL's reason when it cannot
   explicit VirtualPad(std::vector<VirtualPadEvent> script);
   ~VirtualPad();
   VirtualPad(const VirtualPad&) = delete;
@@ -25,11 +26,12 @@ class VirtualPad {
   void play();
 
  private:
+  void plug();
   void unplug();
 
   std::vector<VirtualPadEvent> script_;
   std::size_t next_ = 0;
-  std::chrono::steady_clock::time_point plugged_at_;
+  std::chrono::steady_clock::time_point started_at_;
   int device_index_ = -1;
   _SDL_Joystick* joystick_ = nullptr;
 };

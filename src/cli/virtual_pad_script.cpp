@@ -25,11 +25,12 @@ std::vector<VirtualPadEvent> parse_virtual_pad_script(const std::string& text) {
     if (!at_s || *at_s < 0.0) fail("'" + fields[0] + "' is not a time in seconds");
     if (!events.empty() && *at_s < events.back().at_s) fail("times must not go back");
     event.at_s = *at_s;
-    if (fields.size() == 2 && fields[1] == "unplug") {
+    if (fields.size() == 2 && (fields[1] == "plug" || fields[1] == "unplug")) {
+      event.kind = fields[1] == "plug" ? VirtualPadEvent::Kind::Plug : VirtualPadEvent::Kind::Unplug;
       events.push_back(event);
       continue;
     }
-    if (fields.size() != 3) fail("expected '<seconds> <control> <value>' or '<seconds> unplug'");
+    if (fields.size() != 3) fail("expected '<seconds> <control> <value>', '<seconds> plug' or '<seconds> unplug'");
     const std::optional<double> value = finite_number(fields[2]);
     if (!value || *value < -1.0 || *value > 1.0) fail("'" + fields[2] + "' is not a value in [-1, 1]");
     event.control = fields[1];

@@ -1,6 +1,8 @@
 // The timed script `cerebellum drive --virtual-pad FILE` plays into SDL's virtual joystick, so the
-// tests drive the program through the same game-controller path as a real pad. One event a line:
-//   <seconds after the pad is plugged> <SDL game-controller name: a, b, leftx, lefty, ...> <value>
+// tests drive the program through the same game-controller path as a real pad. One event a line,
+// in seconds after the program started:
+//   <seconds> <SDL game-controller name: a, b, leftx, lefty, ...> <value>
+//   <seconds> plug     (the pad is plugged at the start when the script has no plug line)
 //   <seconds> unplug
 // Buttons take 0 or 1; axes take [-1, 1] as SDL reports them (lefty -1: the stick pushed forward).
 // '#' starts a comment.
@@ -12,8 +14,10 @@
 namespace cerebellum {
 
 struct VirtualPadEvent {
+  enum class Kind { Set, Plug, Unplug };
   double at_s = 0.0;
-  std::string control;  // empty: unplug
+  Kind kind = Kind::Set;
+  std::string control;  // of Set
   double value = 0.0;
 };
 
