@@ -1,7 +1,7 @@
 // The faults the simulation can inject, in one small text grammar shared by the `cerebellum fault`
 // verb, the simulation's control channel and the fault scenario files:
 //   motor N disconnected | over_temperature | driver_fault | under_voltage | over_voltage |
-//           over_current [A|B|C] | overload [1..8] | encoder_lost | stuck | derated FRACTION
+//           over_current [A|B|C] | overload [1..8] | encoder_lost | stuck | derated FRACTION | hot DEG_C
 //   imu bias RAD_S | stuck | dropout | nan
 //   battery soc PERCENT | drain FACTOR | capacity AH | sag VOLTS
 //   foot LEG slippery [MU]
