@@ -16,6 +16,7 @@
 #include "cli/virtual_pad.hpp"
 #include "control/locomotion/gait_table.hpp"
 #include "core/text_file.hpp"
+#include "io/lcm_highlevel/highlevel_wire.hpp"
 #include "loop/lockstep_client.hpp"
 
 namespace cerebellum {
@@ -29,18 +30,6 @@ constexpr auto kSamplePeriod = std::chrono::milliseconds(static_cast<int>(Lockst
 constexpr auto kPollPeriod = std::chrono::milliseconds(10);
 // a virtual pad's script is a few lines
 constexpr std::size_t kMaxScriptBytes = 1 << 16;
-
-robot_control_cmd_lcmt to_wire(const HighLevelCommand& command) {
-  robot_control_cmd_lcmt wire{};
-  wire.mode = static_cast<std::int8_t>(command.mode);
-  wire.gait_id = static_cast<std::int8_t>(command.gait_id);
-  wire.contact = static_cast<std::int8_t>(command.contact);
-  for (int i = 0; i < 3; ++i) wire.vel_des[i] = command.vel_des[static_cast<std::size_t>(i)];
-  for (int i = 0; i < 2; ++i) wire.step_height[i] = command.step_height[static_cast<std::size_t>(i)];
-  wire.value = command.value;
-  wire.duration = command.duration;
-  return wire;
-}
 
 std::string mode_and_gait(int mode, int gait_id) {
   const ModeInfo* info = find_mode(mode);
@@ -63,7 +52,7 @@ HighLevelClientOptions client_options(int ttl) {
 
 bool send(HighLevelClient& client, const DriveStep& step) {
   if (!step.is_new) return true;
-  if (client.send(to_wire(step.command)) != HighLevelClientStatus::Ok) {
+  if (client.send(encode_robot_control_cmd(step.command)) != HighLevelClientStatus::Ok) {
     std::fprintf(stderr, "drive: cannot send: %s\n", client.last_error().c_str());
     return false;
   }

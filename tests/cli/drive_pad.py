@@ -11,6 +11,8 @@ Judged on the simulation's truth (sim_truth) and the MC's responses:
    forward, then B while walking: the MC reports mode 7 gait 0 within a second.
 3. drive_damp_every_mode.pad: B from a stand (12), from a motion (62) and from a jump (16) under way:
    mode 7 gait 0 within a second each time.
+4. drive_pose.pad: in mode 11, stick released, the right stick full up: the trunk's nose up (the
+   truth's pitch, right-handed about the body's left axis, below -0.2 rad for the 0.3 rad asked).
 
     PYTHONPATH=<generated python types> drive_pad.py <cerebellum> <walk-unplug script> <walk-damp script>
 """
@@ -31,6 +33,8 @@ UNPLUG_S = 14.0
 EXPECTED_SPEED_M_S = 0.3
 SPEED_TOLERANCE = 0.25  # of the expected speed
 DAMP_PRESS_S = 9.0      # drive_walk_damp.pad
+POSE_UP_S = 7.5         # drive_pose.pad: the right stick up
+POSE_UNPLUG_S = 11.0
 
 
 def heading(q):
@@ -108,11 +112,27 @@ def damp_from(exe, script, presses, seconds):
         print("drive_pad: damp button in mode %d: mode 7 after %.2f s" % (mode, damped[0] - press_s))
 
 
+def pitch_of(q):
+    w, x, y, z = q
+    return math.asin(max(-1.0, min(1.0, 2.0 * (w * y - z * x))))
+
+
+def head_up(exe, script):
+    truth, _, _ = run_drive(exe, script, POSE_UNPLUG_S + 1.0)
+    window = [pitch_of(t.quaternion) for at, t in truth if POSE_UP_S + 1.5 <= at <= POSE_UNPLUG_S - 0.5]
+    if not window:
+        sys.exit("drive_pad: no truth while the right stick was up")
+    print("drive_pad: right stick up: trunk pitch %.3f .. %.3f rad (negative: nose up)" % (min(window), max(window)))
+    if max(window) > -0.2:
+        sys.exit("drive_pad: the right stick up did not raise the head")
+
+
 def main():
-    exe, walk_unplug, walk_damp, damp_every_mode = sys.argv[1:5]
+    exe, walk_unplug, walk_damp, damp_every_mode, pose = sys.argv[1:6]
     walk_and_unplug(exe, walk_unplug)
     damp_from(exe, walk_damp, [(DAMP_PRESS_S, 11)], DAMP_PRESS_S + 3.0)
     damp_from(exe, damp_every_mode, [(5.0, 12), (12.0, 62), (18.0, 16)], 20.5)
+    head_up(exe, pose)
     print("drive_pad: ok")
 
 

@@ -13,4 +13,4 @@ cd "$work"
 start_sim sim.log "$exe" sim --speed 1 --duration 90
 trap 'kill -9 $sim_pid 2>/dev/null || true' EXIT
 PYTHONPATH="$types" /usr/bin/python3 "$here/drive_pad.py" "$exe" "$here/drive_walk_unplug.pad" "$here/drive_walk_damp.pad" \
-  "$here/drive_damp_every_mode.pad"
+  "$here/drive_damp_every_mode.pad" "$here/drive_pose.pad"
