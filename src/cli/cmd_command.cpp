@@ -63,14 +63,6 @@ std::string describe(const localization_lcmt& o) {
   return text;
 }
 
-HighLevelClientOptions client_options(int ttl) {
-  HighLevelClientOptions options;
-  options.command_url = highlevel_url(kCommandPort, ttl);
-  options.response_url = highlevel_url(kResponsePort, ttl);
-  options.odometry_url = highlevel_url(kOdometryPort, ttl);
-  return options;
-}
-
 std::string no_response_hint(const HighLevelClientOptions& options) {
   return "no robot_control_response on " + options.response_url +
          " (is `cerebellum sim` running with highlevel.enabled: true, in this network namespace?)";
@@ -128,7 +120,7 @@ int run_cmd_command(const std::vector<std::string>& args) {
   const robot_control_cmd_lcmt& command = options.command;
 
   StopSignal stop_signal;  // before the client's threads, so they inherit the blocked signals
-  const HighLevelClientOptions client_settings = client_options(options.ttl);
+  const HighLevelClientOptions client_settings = highlevel_client_options(options.ttl);
   HighLevelClient client(client_settings);
   if (const HighLevelClientStatus status = client.start(); status != HighLevelClientStatus::Ok) {
     std::fprintf(stderr, "%s: %s: %s\n", name.c_str(), to_string(status), client.last_error().c_str());
@@ -184,7 +176,7 @@ int run_status_command(const std::vector<std::string>& args) {
     return 0;
   }
   StopSignal stop_signal;
-  const HighLevelClientOptions client_settings = client_options(options.ttl);
+  const HighLevelClientOptions client_settings = highlevel_client_options(options.ttl);
   HighLevelClient client(client_settings);
   if (const HighLevelClientStatus status = client.start(); status != HighLevelClientStatus::Ok) {
     std::fprintf(stderr, "status: %s: %s\n", to_string(status), client.last_error().c_str());

@@ -6,6 +6,8 @@
 #include <string>
 #include <vector>
 
+#include <cerebellum/highlevel_client.hpp>
+
 #include "io/lcm_common/lcm_network.hpp"
 #include "robot_control_cmd_lcmt.hpp"
 
@@ -41,5 +43,13 @@ inline constexpr int kResponsePort = kLcmResponsePort;
 inline constexpr int kOdometryPort = kLcmMotorSdkPort;
 // the interface's url on one port with the given ttl
 inline std::string highlevel_url(int port, int ttl) { return lcm_url(port, ttl); }
+// a high-level client's three urls with the given ttl (cmd, status, drive)
+inline HighLevelClientOptions highlevel_client_options(int ttl) {
+  HighLevelClientOptions options;
+  options.command_url = highlevel_url(kCommandPort, ttl);
+  options.response_url = highlevel_url(kResponsePort, ttl);
+  options.odometry_url = highlevel_url(kOdometryPort, ttl);
+  return options;
+}
 
 }  // namespace cerebellum

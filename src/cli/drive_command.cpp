@@ -41,11 +41,9 @@ std::string mode_and_gait(int mode, int gait_id) {
   return text;
 }
 
+// the heartbeat at the sampling rate, not the client's default
 HighLevelClientOptions client_options(int ttl) {
-  HighLevelClientOptions options;
-  options.command_url = highlevel_url(kCommandPort, ttl);
-  options.response_url = highlevel_url(kResponsePort, ttl);
-  options.odometry_url = highlevel_url(kOdometryPort, ttl);
+  HighLevelClientOptions options = highlevel_client_options(ttl);
   options.heartbeat_period = kSamplePeriod;
   return options;
 }
