@@ -66,6 +66,28 @@ Watch watch(ModeSim& sim, double seconds) {
   return w;
 }
 
+// after a release, for `seconds`: whether it stayed upright throughout, and how long until it stood
+// (every foot down, trunk below 0.15 m/s) from then on to the end; -1 when it never did
+struct Release {
+  bool stayed_up = true;
+  double standing_after_s = -1.0;
+};
+Release watch_release(ModeSim& sim, double seconds) {
+  Release r;
+  const double release_s = sim.time_s();
+  double stood_since_s = -1.0;
+  while (sim.time_s() < release_s + seconds - 1e-9) {
+    sim.run(0.002);
+    const GroundTruth t = sim.backend.ground_truth();
+    const bool standing = all_feet_down(sim) && std::hypot(t.velocity_world[0], t.velocity_world[1]) < 0.15;
+    if (!standing) stood_since_s = -1.0;
+    if (standing && stood_since_s < 0.0) stood_since_s = sim.time_s();
+    r.stayed_up = r.stayed_up && upright(sim);
+  }
+  r.standing_after_s = stood_since_s < 0.0 ? -1.0 : stood_since_s - release_s;
+  return r;
+}
+
 class PassiveTrotAlone : public ::testing::TestWithParam<unsigned> {};
 
 TEST_P(PassiveTrotAlone, StandsStillWhileNothingPullsIt) {
@@ -109,19 +131,11 @@ TEST_P(PassiveTrotPull, FollowsASteadyPullAndStandsWhereItIsLeftAlone) {
 
   // released: standing (every foot down from then on, trunk at rest) within 1.5 s of the release
   const Eigen::Vector2d released_at = true_xy(sim);
-  double stood_since_s = -1.0;
-  const double end_s = sim.time_s() + 3.0;
-  while (sim.time_s() < end_s - 1e-9) {
-    sim.run(0.002);
-    const GroundTruth t = sim.backend.ground_truth();
-    const bool standing = all_feet_down(sim) && std::hypot(t.velocity_world[0], t.velocity_world[1]) < 0.15;
-    if (!standing) stood_since_s = -1.0;
-    if (standing && stood_since_s < 0.0) stood_since_s = sim.time_s();
-    ASSERT_TRUE(upright(sim));
-  }
-  ASSERT_GE(stood_since_s, 0.0) << "still stepping 3 s after the pull stopped";
-  EXPECT_LE(stood_since_s - (end_s - 3.0), 1.5);
-  std::printf("released: standing after %.2f s\n", stood_since_s - (end_s - 3.0));
+  const Release released = watch_release(sim, 3.0);
+  ASSERT_TRUE(released.stayed_up);
+  ASSERT_GE(released.standing_after_s, 0.0) << "still stepping 3 s after the pull stopped";
+  EXPECT_LE(released.standing_after_s, 1.5);
+  std::printf("released: standing after %.2f s\n", released.standing_after_s);
   EXPECT_FALSE(sim.modes.passive_trot().follow().following());
   // near where it was let go: the trot's last steps, no wandering off
   EXPECT_LT((true_xy(sim) - released_at).norm(), 0.15);
@@ -163,18 +177,10 @@ TEST_P(PassiveTrotLatePull, ReleasedItStandsWithinOneAndAHalfSecondsHoweverLongA
   const Watch pulled = watch(sim, c.pull_s);
   ASSERT_TRUE(pulled.stayed_up);
   ASSERT_GT(pulled.longest_lift_s, 0.1) << "it did not step along the pull";
-  double stood_since_s = -1.0;
-  const double release_s = sim.time_s();
-  while (sim.time_s() < release_s + 3.0 - 1e-9) {
-    sim.run(0.002);
-    const GroundTruth t = sim.backend.ground_truth();
-    const bool standing = all_feet_down(sim) && std::hypot(t.velocity_world[0], t.velocity_world[1]) < 0.15;
-    if (!standing) stood_since_s = -1.0;
-    if (standing && stood_since_s < 0.0) stood_since_s = sim.time_s();
-    ASSERT_TRUE(upright(sim));
-  }
-  ASSERT_GE(stood_since_s, 0.0) << "still stepping 3 s after the release";
-  EXPECT_LE(stood_since_s - release_s, 1.5);
+  const Release released = watch_release(sim, 3.0);
+  ASSERT_TRUE(released.stayed_up);
+  ASSERT_GE(released.standing_after_s, 0.0) << "still stepping 3 s after the release";
+  EXPECT_LE(released.standing_after_s, 1.5);
   EXPECT_FALSE(sim.modes.passive_trot().follow().following());
 }
 
