@@ -9,6 +9,7 @@
 #include "cli/log_command.hpp"
 #include "cli/fault_command.hpp"
 #include "cli/push_command.hpp"
+#include "cli/run_command.hpp"
 #include "cli/sim_command.hpp"
 
 namespace {
@@ -17,6 +18,7 @@ constexpr const char* kUsage =
     "usage: cerebellum <command> [options]\n"
     "commands:\n"
     "  sim    run the MC on the simulated CyberDog2 (cerebellum sim --help)\n"
+    "  run    run the MC on the robot its configuration names, e.g. a CyberDog2 (cerebellum run --help)\n"
     "  cmd    send a high-level command to a running MC and keep it alive (cerebellum cmd --help)\n"
     "  drive  drive a running MC with a gamepad (cerebellum drive --help)\n"
     "  status print the MC's high-level responses and odometry (cerebellum status --help)\n"
@@ -36,6 +38,7 @@ int main(int argc, char** argv) {
   }
   const std::vector<std::string> rest(args.begin() + 1, args.end());
   if (args[0] == "sim") return cerebellum::run_sim_command(rest);
+  if (args[0] == "run") return cerebellum::run_run_command(rest);
   if (args[0] == "cmd") return cerebellum::run_cmd_command(rest);
   if (args[0] == "drive") return cerebellum::run_drive_command(rest);
   if (args[0] == "status") return cerebellum::run_status_command(rest);
@@ -46,7 +49,7 @@ int main(int argc, char** argv) {
   if (args[0] == "gait") return cerebellum::run_gait_command(rest);
   std::fprintf(
       stderr,
-      "cerebellum: unknown command '%s' (accepted: sim, cmd, drive, status, log, replay, push, fault, gait)\n%s",
+      "cerebellum: unknown command '%s' (accepted: sim, run, cmd, drive, status, log, replay, push, fault, gait)\n%s",
       args[0].c_str(), kUsage);
   return 2;
 }

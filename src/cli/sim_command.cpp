@@ -14,13 +14,9 @@
 #include "loop/simulated_robot.hpp"
 #include "cli/fault_scenario_file.hpp"
 #include "cli/stop_signal.hpp"
-#include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
-#include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
-#include "io/lcm_motor_sdk/lcm_state_feedback.hpp"
+#include "cli/client_interfaces.hpp"
 #include "io/lcm_sim_control/sim_control_adapter.hpp"
-#include "io/udp_aliengo/udp_aliengo_adapter.hpp"
 #include "io/lcm_sim_truth/sim_truth_publisher.hpp"
-#include "io/shm_lowlevel/shm_lowlevel_port.hpp"
 
 namespace cerebellum {
 
@@ -37,6 +33,13 @@ int run_sim_command(const std::vector<std::string>& args) {
     config = options.config_path.empty() ? default_config() : load_config(options.config_path);
     if (options.seed) config.robot.noise.seed = *options.seed;
     if (!options.faults_path.empty()) faults = load_fault_scenario(options.faults_path);
+    if (config.robot_kind != RobotKind::Sim) {
+      std::fprintf(stderr,
+                   "cerebellum sim: %s: robot.kind is %s, a real robot; `cerebellum sim` and its tools (the viewer, "
+                   "push, fault, sim_truth) run only the simulated one: start it with `cerebellum run --config %s`\n",
+                   options.config_path.c_str(), robot_kind_name(config.robot_kind), options.config_path.c_str());
+      return 2;
+    }
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cerebellum sim: %s\n", e.what());
     return 2;
@@ -52,39 +55,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     // the client links' faults (`cerebellum fault link ...`): before the adapters that use them
     LinkFaultSet link_faults;
     const bool link_faults_served = config.sim_command.enabled;
-    std::optional<ShmLowLevelPort> shm;
-    if (config.shm.enabled) {
-      shm.emplace(config.shm, config.safety, stderr);  // events go where every interface logs
-      mc.arbiter().add_low_level_source(shm->source());
-      loop.add_substep_participant(*shm);
-    }
-    std::optional<LcmMotorSdkAdapter> motor_sdk;
-    if (config.motor_sdk.enabled) {
-      motor_sdk.emplace(config.motor_sdk, stderr);
-      if (link_faults_served) motor_sdk->attach_link_faults(link_faults.motor_sdk);
-      mc.arbiter().add_low_level_source(motor_sdk->source());
-      loop.add_observer(*motor_sdk);
-    }
-    std::optional<LcmHighLevelAdapter> highlevel;
-    if (config.highlevel.enabled) {
-      highlevel.emplace(mc.client_port(HighLevelSource::CyberDog2Lcm), mc.user_gait_upload(), config.highlevel,
-                        config.loop_period_s, stderr);
-      if (link_faults_served) highlevel->attach_link_faults(link_faults.highlevel);
-      loop.add_observer(*highlevel);
-    }
-    std::optional<UdpAliengoAdapter> aliengo;
-    if (config.aliengo.enabled) {
-      aliengo.emplace(mc.client_port(HighLevelSource::AlienGoUdp), mc.aliengo_source().inbox(), config.aliengo, stderr);
-      if (link_faults_served) aliengo->attach_link_faults(link_faults.aliengo);
-      loop.add_observer(*aliengo);
-    }
-    // state_estimator and leg_control_data: listed by both interfaces, published once for both
-    std::optional<LcmStateFeedback> state_feedback;
-    if (config.motor_sdk.enabled || config.highlevel.enabled) {
-      state_feedback.emplace(config.motor_sdk.control_url, config.motor_sdk.estimator_url, config.loop_period_s,
-                             motor_sdk ? &motor_sdk->source() : nullptr);
-      loop.add_observer(*state_feedback);
-    }
+    ClientInterfaces interfaces(mc, link_faults_served ? &link_faults : nullptr, stderr);
     // the simulation's ground truth for tools and users' tests; the MC never reads it
     std::optional<SimTruthPublisher> sim_truth;
     if (config.sim_truth.rate_hz > 0.0) {
@@ -106,10 +77,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     const RunStats stats = tools.run({options.duration_s, options.speed}, stop_signal.flag());
     reporter.finish();
     const bool tools_ok = tools.finish(stdout, stderr);
-    if (motor_sdk) motor_sdk->finish(stdout);
-    if (highlevel) highlevel->finish(stdout);
-    if (aliengo) aliengo->finish(stdout);
-    if (state_feedback) state_feedback->finish();
+    interfaces.finish(stdout);
     if (sim_truth) sim_truth->finish();
     if (sim_control) sim_control->finish(stderr);
     std::printf(

@@ -7,6 +7,7 @@
 #include <set>
 #include <sstream>
 
+#include "loop/robot_section.hpp"
 #include "loop/yaml_section.hpp"
 #include "core/robot_model.hpp"
 #include "io/lcm_common/lcm_network.hpp"
@@ -42,19 +43,6 @@ void read_motions(const SectionReader& section, const fs::path& base_dir, Motion
     *folder = (path.is_absolute() ? path : base_dir / path).lexically_normal().string();
     if (!fs::is_directory(*folder)) section.fail(std::string("motions.") + key, "is not a folder: " + *folder);
   }
-}
-
-void read_robot(const SectionReader& section, const fs::path& base_dir, MujocoBackendConfig& robot) {
-  std::string model;
-  section.path("model", model);
-  if (!model.empty()) {
-    const fs::path path(model);
-    robot.model_path = (path.is_absolute() ? path : base_dir / path).lexically_normal().string();
-  }
-  section.text("initial_pose", robot.initial_keyframe, {"lying", "stand"});
-  section.number("initial_height_m", robot.initial_height_m, 0.05, 2.0);
-  section.flag("sensor_noise", robot.noise.enabled);
-  section.unsigned_integer("seed", robot.noise.seed);
 }
 
 void read_shm(const SectionReader& section, ShmLowLevelConfig& shm) {
@@ -178,11 +166,7 @@ McConfig load_config(const std::string& path) {
     config.startup = startup == "off" ? Startup::Off : startup == "damper" ? Startup::Damper : Startup::Stand;
     config.locomotion_stand = stand == "qp" ? LocomotionStand::Qp : LocomotionStand::Mpc;
   }
-  if (root["robot"]) {
-    read_robot(SectionReader(root["robot"], path, "robot",
-                             {"model", "initial_pose", "initial_height_m", "sensor_noise", "seed"}),
-               base_dir, config.robot);
-  }
+  if (root["robot"]) read_robot_section(root["robot"], path, base_dir.string(), config);
   if (root["loop"]) {
     SectionReader(root["loop"], path, "loop", {"period_s"}).number("period_s", config.loop_period_s, 0.001, 0.01);
   }
@@ -243,6 +227,7 @@ McConfig load_config(const std::string& path) {
   if (root["sim_command"]) {
     SectionReader(root["sim_command"], path, "sim_command", {"enabled"}).flag("enabled", config.sim_command.enabled);
   }
+  check_robot_fits(root, path, config);
   return config;
 }
 

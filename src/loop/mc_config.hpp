@@ -6,10 +6,12 @@
 #include <string>
 
 #include "loop/config_error.hpp"
+#include "loop/robot_kind.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "control/stand_up_controller.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
+#include "io/lcm_motor_sdk_robot/motor_sdk_robot_config.hpp"
 #include "io/lcm_sim_control/sim_control_config.hpp"
 #include "io/lcm_sim_truth/sim_truth_config.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
@@ -36,7 +38,9 @@ struct McConfig {
   // as the robot powers on: lying, motors off, whichever client comes first may take it
   Startup startup = Startup::Off;
   LocomotionStand locomotion_stand = LocomotionStand::Mpc;
-  MujocoBackendConfig robot;
+  RobotKind robot_kind = RobotKind::Sim;  // robot.kind
+  MujocoBackendConfig robot;               // the simulation (and the model every kind reads)
+  MotorSdkRobotConfig motor_sdk_robot;     // robot.cyberdog2_motor_sdk: the CyberDog2's motor SDK link
   double loop_period_s = 0.002;
   StandUpConfig stand_up = default_stand_up_config();
   GuardLimits safety;

@@ -18,5 +18,9 @@ inline constexpr std::uint32_t kMotorErrorWordFaultMask = 0x3FFFFFFFu;
 std::uint32_t motor_error_word(std::uint32_t motor_faults, MotorDriverMode mode);
 // back to MotorFault bits (the client verbs and tests read the wire with it)
 std::uint32_t motor_faults_from_word(std::uint32_t word);
+// the driver's mode from bits 30..31 (a robot backend reads the wire with it)
+inline MotorDriverMode motor_driver_mode_from_word(std::uint32_t word) {
+  return static_cast<MotorDriverMode>((word >> 30) & 0x3u);
+}
 
 }  // namespace cerebellum

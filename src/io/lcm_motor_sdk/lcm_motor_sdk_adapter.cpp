@@ -11,10 +11,6 @@
 namespace cerebellum {
 namespace {
 
-constexpr const char* kMotorCtrlChannel = "motor_ctrl";
-constexpr const char* kMotorCtrlStateChannel = "motor_ctrl_state";
-constexpr const char* kSpiDataChannel = "spi_data";
-
 constexpr const char* kInterfaceName = "motor sdk";
 
 template <typename Message>

@@ -12,7 +12,6 @@ namespace cerebellum {
 namespace {
 
 constexpr const char* kLegControlDataChannel = "leg_control_data";
-constexpr const char* kStateEstimatorChannel = "state_estimator";
 constexpr const char* kInterfaceName = "state feedback";
 
 }  // namespace

@@ -72,6 +72,35 @@ spi_data_t make_spi_data(const RobotState& state) {
   return message;
 }
 
+SpiJointState joint_state_from_spi_data(const spi_data_t& message) {
+  SpiJointState state;
+  JointArray<double> q{}, qd{}, tau{};
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    const std::size_t abad = joint_index(leg, 0), hip = joint_index(leg, 1), knee = joint_index(leg, 2);
+    q[abad] = message.q_abad[leg];
+    q[hip] = message.q_hip[leg];
+    q[knee] = message.q_knee[leg];
+    qd[abad] = message.qd_abad[leg];
+    qd[hip] = message.qd_hip[leg];
+    qd[knee] = message.qd_knee[leg];
+    tau[abad] = message.tau_abad[leg];
+    tau[hip] = message.tau_hip[leg];
+    tau[knee] = message.tau_knee[leg];
+    state.temperature_c[abad] = message.tmp_abad[leg] / 10.0;
+    state.temperature_c[hip] = message.tmp_hip[leg] / 10.0;
+    state.temperature_c[knee] = message.tmp_knee[leg] / 10.0;
+  }
+  state.q = wire_to_sdk(q);
+  state.qd = wire_to_sdk(qd);
+  state.tau = wire_to_sdk(tau);
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    const auto word = static_cast<std::uint32_t>(message.flags[i]);
+    state.motor_faults[i] = motor_faults_from_word(word);
+    state.driver_mode[i] = motor_driver_mode_from_word(word);
+  }
+  return state;
+}
+
 motor_ctrl_state_lcmt make_motor_ctrl_state(const MotorSdkStatus& status) {
   motor_ctrl_state_lcmt message{};
   message.err_flag = static_cast<std::int16_t>(status.err_flag);

@@ -39,6 +39,16 @@ state_estimator_lcmt make_state_estimator(const RobotState& state) {
   return message;
 }
 
+ImuSample imu_from_state_estimator(const state_estimator_lcmt& message) {
+  ImuSample imu;
+  for (std::size_t i = 0; i < 4; ++i) imu.quat[i] = message.quat[i];
+  for (std::size_t i = 0; i < 3; ++i) {
+    imu.gyro_rad_s[i] = message.omegaBody[i];
+    imu.specific_force_m_s2[i] = message.aBody[i];
+  }
+  return imu;
+}
+
 leg_control_data_lcmt make_leg_control_data(const RobotState& state, const JointCommand& command) {
   leg_control_data_lcmt message{};
   const JointArray<double> q = sdk_to_wire(state.q);

@@ -1,0 +1,87 @@
+#include "cli/run_command.hpp"
+
+#include <cstdio>
+#include <exception>
+#include <memory>
+
+#include "cli/client_interfaces.hpp"
+#include "cli/run_options.hpp"
+#include "cli/served_endpoints.hpp"
+#include "cli/stop_signal.hpp"
+#include "io/lcm_motor_sdk_robot/lcm_motor_sdk_robot.hpp"
+#include "loop/mc.hpp"
+#include "loop/mc_config.hpp"
+#include "observers/console_reporter.hpp"
+
+namespace cerebellum {
+namespace {
+
+// the loop in real time: a robot does not wait for the controller
+constexpr double kRealTime = 1.0;
+
+}  // namespace
+
+int run_run_command(const std::vector<std::string>& args) {
+  RunCommandOptions options;
+  McConfig config;
+  try {
+    options = parse_run_options(args);
+    if (options.help) {
+      std::fputs(run_usage().c_str(), stdout);
+      return 0;
+    }
+    config = load_config(options.config_path);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cerebellum run: %s\n", e.what());
+    return 2;
+  }
+  if (config.robot_kind == RobotKind::Sim) {
+    std::fprintf(stderr,
+                 "cerebellum run: %s: robot.kind is sim; the simulated robot runs with `cerebellum sim --config %s`\n",
+                 options.config_path.c_str(), options.config_path.c_str());
+    return 2;
+  }
+
+  // before any thread starts, so every thread inherits the blocked signals
+  StopSignal stop_signal;
+  try {
+    auto backend = std::make_unique<LcmMotorSdkRobot>(config.motor_sdk_robot, stderr);
+    LcmMotorSdkRobot& robot = *backend;
+    Mc mc(config, McRobot{std::move(backend), nullptr, nullptr});
+    ConsoleReporter reporter(stdout);
+    mc.loop().add_observer(reporter);
+    ClientInterfaces interfaces(mc, nullptr, stderr);
+
+    std::printf("cerebellum run: activating the CyberDog2's motor mode on %s (all-zero frames, up to %g s)\n",
+                config.motor_sdk_robot.control_url.c_str(), config.motor_sdk_robot.activation_timeout_s);
+    std::fflush(stdout);
+    if (!robot.activate(stop_signal.flag())) {
+      robot.finish(stderr);
+      std::fprintf(stderr,
+                   "cerebellum run: the robot did not take our frames within %g s: no spi_data, state_estimator or "
+                   "motor_ctrl_state without err_flag bit 1 on %s / %s (is the vendor's MC in motor mode, on this "
+                   "network?)\n",
+                   config.motor_sdk_robot.activation_timeout_s, config.motor_sdk_robot.control_url.c_str(),
+                   config.motor_sdk_robot.estimator_url.c_str());
+      return 1;
+    }
+    std::printf("cerebellum startup %s: %s\n", startup_name(config.startup), startup_meaning(config.startup));
+    std::printf("cerebellum ready: CyberDog2 through its motor SDK (%s), %.0f Hz loop, real time; serving %s\n",
+                config.motor_sdk_robot.control_url.c_str(), 1.0 / config.loop_period_s,
+                served_endpoints(config).c_str());
+    std::fflush(stdout);
+    const RunStats stats = mc.loop().run({options.duration_s, kRealTime}, stop_signal.flag());
+    reporter.finish();
+    interfaces.finish(stdout);
+    robot.finish(stdout);
+    std::printf("cerebellum stopped: %.2f s robot time in %.2f s wall time, %llu ticks, %llu late substeps\n",
+                stats.robot_time_s, stats.wall_time_s, static_cast<unsigned long long>(stats.ticks),
+                static_cast<unsigned long long>(stats.late_substeps));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "cerebellum run: %s\n", e.what());
+    return 1;
+  }
+  return 0;
+}
+
+}  // namespace cerebellum

@@ -1,0 +1,198 @@
+#include "io/lcm_motor_sdk_robot/lcm_motor_sdk_robot.hpp"
+
+#include <lcm/lcm-cpp.hpp>
+
+#include <cmath>
+#include <thread>
+
+#include "io/common/wall_clock.hpp"
+#include "io/lcm_common/lcm_packet.hpp"
+#include "io/lcm_common/lcm_url.hpp"
+#include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
+#include "io/lcm_motor_sdk/robot_state_messages.hpp"
+
+namespace cerebellum {
+namespace {
+
+constexpr const char* kInterfaceName = "cyberdog2 motor sdk robot";
+// the vendor's client period: activation frames go out at this rate too
+constexpr double kClientPeriodS = 0.002;
+// link events (lost, back) a flapping link can provoke: a few per second, the rest summed up
+constexpr int kLinkLinesPerSecond = 4;
+
+template <typename Number, std::size_t N>
+bool all_finite(const Number (&values)[N]) {
+  for (const Number value : values) {
+    if (!std::isfinite(value)) return false;
+  }
+  return true;
+}
+
+bool finite(const spi_data_t& m) {
+  return all_finite(m.q_abad) && all_finite(m.q_hip) && all_finite(m.q_knee) && all_finite(m.qd_abad) &&
+         all_finite(m.qd_hip) && all_finite(m.qd_knee) && all_finite(m.tau_abad) && all_finite(m.tau_hip) &&
+         all_finite(m.tau_knee);
+}
+
+bool finite(const state_estimator_lcmt& m) {
+  return all_finite(m.quat) && all_finite(m.omegaBody) && all_finite(m.aBody);
+}
+
+// decodes a packet of a fixed-size type, counting what is malformed or not finite; true when usable
+template <typename Message>
+bool take_packet(const lcm::ReceiveBuffer* buffer, Message& message, MotorSdkRobotRejections& rejected) {
+  if (decode_fixed_size(buffer->data, buffer->data_size, message) != WireDecode::Ok) {
+    rejected.malformed.add();
+    return false;
+  }
+  return true;
+}
+
+}  // namespace
+
+LcmMotorSdkRobot::LcmMotorSdkRobot(const MotorSdkRobotConfig& config, std::FILE* log)
+    : config_(config),
+      log_(log),
+      control_lcm_(open_lcm_url(config.control_url, kInterfaceName)),
+      estimator_lcm_(open_lcm_url(config.estimator_url, kInterfaceName)),
+      client_(config),
+      link_log_(log, "cyberdog2", "link events", kLinkLinesPerSecond),
+      count_log_period_(wall_seconds()) {
+  control_lcm_->subscribe(kSpiDataChannel, &LcmMotorSdkRobot::on_spi_data, this);
+  control_lcm_->subscribe(kMotorCtrlStateChannel, &LcmMotorSdkRobot::on_ctrl_state, this);
+  estimator_lcm_->subscribe(kStateEstimatorChannel, &LcmMotorSdkRobot::on_state_estimator, this);
+  thread_.start([this] { step(); });
+}
+
+LcmMotorSdkRobot::~LcmMotorSdkRobot() { thread_.stop(); }
+
+SensorFrame LcmMotorSdkRobot::read() {
+  while (const std::optional<Joints> joints = joints_.try_pop()) client_.take_joints(joints->state, joints->received_s);
+  while (const std::optional<Imu> imu = imu_.try_pop()) client_.take_imu(imu->sample, imu->received_s);
+  while (const std::optional<std::uint16_t> err_flag = err_flags_.try_pop()) client_.take_err_flag(*err_flag);
+  const SensorFrame frame = client_.frame(wall_seconds(), robot_time_s_);
+  statuses_.try_push(StatusAt{client_.status(), robot_time_s_});
+  return frame;
+}
+
+void LcmMotorSdkRobot::write(const JointCommand& command) {
+  frames_.try_push(encode_motor_ctrl(client_.command(command)));
+}
+
+bool LcmMotorSdkRobot::activate(const std::atomic<bool>& stop) {
+  const double deadline_s = wall_seconds() + config_.activation_timeout_s;
+  const auto period = std::chrono::duration<double>(kClientPeriodS);
+  while (!stop.load(std::memory_order_relaxed) && wall_seconds() < deadline_s) {
+    write(passive_command());
+    read();
+    const MotorSdkClientStatus& status = client_.status();
+    if (status.activated && !status.link_lost) return true;
+    std::this_thread::sleep_for(period);
+    advance(kClientPeriodS);
+  }
+  return false;
+}
+
+void LcmMotorSdkRobot::step() {
+  handle_pending(*control_lcm_, 1);
+  handle_pending(*estimator_lcm_, 0);
+  while (const std::optional<motor_ctrl_lcmt> frame = frames_.try_pop()) {
+    control_lcm_->publish(kMotorCtrlChannel, &*frame);
+  }
+  while (const std::optional<StatusAt> status = statuses_.try_pop()) log_changes(*status);
+  log_counts_once_per_second();
+}
+
+void LcmMotorSdkRobot::on_spi_data(const lcm::ReceiveBuffer* buffer, const std::string&) {
+  spi_data_t message{};
+  if (!take_packet(buffer, message, rejected_)) return;
+  if (!finite(message)) {
+    rejected_.non_finite.add();
+    return;
+  }
+  if (!joints_.try_push(Joints{joint_state_from_spi_data(message), wall_seconds()})) rejected_.dropped.add();
+}
+
+void LcmMotorSdkRobot::on_state_estimator(const lcm::ReceiveBuffer* buffer, const std::string&) {
+  state_estimator_lcmt message{};
+  if (!take_packet(buffer, message, rejected_)) return;
+  if (!finite(message)) {
+    rejected_.non_finite.add();
+    return;
+  }
+  if (!imu_.try_push(Imu{imu_from_state_estimator(message), wall_seconds()})) rejected_.dropped.add();
+}
+
+void LcmMotorSdkRobot::on_ctrl_state(const lcm::ReceiveBuffer* buffer, const std::string&) {
+  motor_ctrl_state_lcmt message{};
+  if (!take_packet(buffer, message, rejected_)) return;
+  if (!err_flags_.try_push(static_cast<std::uint16_t>(message.err_flag))) rejected_.dropped.add();
+}
+
+void LcmMotorSdkRobot::log_changes(const StatusAt& now) {
+  const MotorSdkClientStatus& was = logged_.status;
+  const MotorSdkClientStatus& is = now.status;
+  char line[256];
+  if (is.activated && !was.activated) {
+    std::snprintf(line, sizeof line, "the robot takes our frames (err_flag 0x%02x) at %.3f s robot time",
+                  static_cast<unsigned>(is.err_flag), now.robot_time_s);
+    link_log_.line(wall_seconds(), line);
+  } else if (!is.activated && was.activated) {
+    std::snprintf(line, sizeof line,
+                  "err_flag 0x%02x at %.3f s robot time: the robot lost our frames and damps; all-zero frames "
+                  "until it takes them again",
+                  static_cast<unsigned>(is.err_flag), now.robot_time_s);
+    link_log_.line(wall_seconds(), line);
+  }
+  if (is.link_losses > was.link_losses) {
+    std::snprintf(line, sizeof line,
+                  "link lost at %.3f s robot time: no spi_data or state_estimator for %.1f ms (limit %.1f ms); "
+                  "damping the legs (loss %llu)",
+                  now.robot_time_s, is.link_silent_s * 1e3, config_.link_timeout_s * 1e3,
+                  static_cast<unsigned long long>(is.link_losses));
+    link_log_.line(wall_seconds(), line);
+  } else if (was.link_lost && !is.link_lost && was.link_losses > 0) {
+    std::snprintf(line, sizeof line, "link back at %.3f s robot time", now.robot_time_s);
+    link_log_.line(wall_seconds(), line);
+  }
+  if (is.stopped && !was.stopped) {
+    // once per run: never rate limited away
+    std::fprintf(log_,
+                 "cyberdog2: motor error (motors 0x%03x) at %.3f s robot time: commanding stopped, damping frames "
+                 "until restart\n",
+                 static_cast<unsigned>(is.error_motors), now.robot_time_s);
+  }
+  link_log_.tick(wall_seconds());
+  logged_ = now;
+  std::fflush(log_);
+}
+
+void LcmMotorSdkRobot::log_counts_once_per_second() {
+  if (!count_log_period_.due(wall_seconds())) return;
+  const std::uint64_t total = rejected_.malformed + rejected_.non_finite + rejected_.dropped;
+  if (total == counts_logged_) return;
+  std::fprintf(log_, "cyberdog2: packets from the robot refused so far: %llu malformed, %llu with NaN/Inf, %llu "
+               "dropped (the loop did not take them)\n",
+               static_cast<unsigned long long>(rejected_.malformed.load()),
+               static_cast<unsigned long long>(rejected_.non_finite.load()),
+               static_cast<unsigned long long>(rejected_.dropped.load()));
+  std::fflush(log_);
+  counts_logged_ = total;
+}
+
+void LcmMotorSdkRobot::finish(std::FILE* out) {
+  thread_.stop();
+  const MotorSdkClientStatus& s = client_.status();
+  using ull = unsigned long long;
+  std::fprintf(out,
+               "cyberdog2: err_flag 0x%02x, %s; %llu link losses; %llu all-zero frames; frames clamped: %llu to "
+               "ranges, %llu position jumps; robot reported %llu late, %llu jumps; refused %llu malformed, %llu "
+               "non-finite, %llu dropped; %llu frames not sent (queue full)\n",
+               static_cast<unsigned>(s.err_flag), s.stopped ? "stopped on a motor error" : "no motor error",
+               ull(s.link_losses), ull(s.zero_frames), ull(s.range_clamps), ull(s.jump_clamps), ull(s.late_reports),
+               ull(s.jump_reports), ull(rejected_.malformed.load()), ull(rejected_.non_finite.load()),
+               ull(rejected_.dropped.load()), ull(frames_.dropped()));
+  std::fflush(out);
+}
+
+}  // namespace cerebellum

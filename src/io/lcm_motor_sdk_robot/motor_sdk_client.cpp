@@ -1,0 +1,82 @@
+#include "io/lcm_motor_sdk_robot/motor_sdk_client.hpp"
+
+#include <algorithm>
+
+#include "lowlevel/motor_sdk/motor_sdk_frame_rules.hpp"
+#include "safety/damping_command.hpp"
+
+namespace cerebellum {
+
+MotorSdkClient::MotorSdkClient(const MotorSdkRobotConfig& config) : config_(config) {}
+
+void MotorSdkClient::take_joints(const SpiJointState& joints, double received_s) {
+  frame_.q = joints.q;
+  frame_.qd = joints.qd;
+  frame_.tau = joints.tau;
+  frame_.temperature_c = joints.temperature_c;
+  frame_.motor_faults = joints.motor_faults;
+  frame_.driver_mode = joints.driver_mode;
+  have_joints_ = true;
+  joints_received_s_ = received_s;
+  // the vendor's client stops for good on a motor error: a driver that tripped may hold a joint
+  // in a state no command of ours can be trusted against
+  if (status_.stopped) return;
+  std::uint32_t error_motors = 0;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    if (joints.motor_faults[i] & kMotorErrorBits) error_motors |= 1u << i;
+  }
+  if (error_motors == 0) return;
+  status_.stopped = true;
+  status_.error_motors = error_motors;
+}
+
+void MotorSdkClient::take_imu(const ImuSample& imu, double received_s) {
+  frame_.imu_quat = imu.quat;
+  frame_.imu_gyro = imu.gyro_rad_s;
+  frame_.imu_accel = imu.specific_force_m_s2;
+  have_imu_ = true;
+  imu_received_s_ = received_s;
+}
+
+void MotorSdkClient::take_err_flag(std::uint16_t err_flag) {
+  status_.err_flag = err_flag;
+  // bit 1: the robot has lost (or never had) our frames and damps; it takes commands again only
+  // after all-zero frames, so the client sends those while the bit is set
+  status_.activated = (err_flag & kMotorSdkCommandLost) == 0;
+  if (err_flag & kMotorSdkCommandLate) ++status_.late_reports;
+  if (err_flag & (kMotorSdkAbadJump | kMotorSdkHipJump | kMotorSdkKneeJump)) ++status_.jump_reports;
+}
+
+SensorFrame MotorSdkClient::frame(double now_s, double robot_time_s) {
+  const bool heard = have_joints_ && have_imu_;
+  const double silent_s = heard ? now_s - std::min(joints_received_s_, imu_received_s_) : 0.0;
+  const bool lost = !heard || silent_s > config_.link_timeout_s;
+  if (lost && !status_.link_lost && heard) ++status_.link_losses;
+  status_.link_lost = lost;
+  status_.link_silent_s = silent_s;
+  SensorFrame frame = frame_;
+  frame.time_s = robot_time_s;
+  // a motor whose state stopped coming is, to the MC, a motor that does not answer: the health
+  // monitor damps the legs for it, as for any disconnected driver, and lets go once it answers
+  if (lost) {
+    for (std::uint32_t& faults : frame.motor_faults) faults |= kMotorDisconnected;
+  }
+  return frame;
+}
+
+JointCommand MotorSdkClient::command(const JointCommand& mc_command) {
+  if (status_.stopped) return damping_command(config_.motor_error_damping_kd, frame_.q);
+  if (!status_.activated) {
+    ++status_.zero_frames;
+    return passive_command();
+  }
+  JointCommand frame = mc_command;
+  const RangeClampCount ranges = clamp_to_ranges(frame, config_.rules);
+  if (ranges.gains + ranges.velocities + ranges.torques + ranges.positions > 0) ++status_.range_clamps;
+  if (config_.rules.position_mutation_limit && clamp_position_jumps(frame, frame_.q, config_.rules).joints > 0) {
+    ++status_.jump_clamps;
+  }
+  return frame;
+}
+
+}  // namespace cerebellum

@@ -1,0 +1,17 @@
+// Which robot the MC drives (config robot.kind): its own MuJoCo simulation, or a real robot through
+// the low-level interface its vendor offers.
+#pragma once
+
+namespace cerebellum {
+
+enum class RobotKind {
+  Sim,                // `cerebellum sim`: the simulated CyberDog2, lockstep or paced
+  Cyberdog2MotorSdk,  // `cerebellum run`: a CyberDog2 through its motor SDK over LCM, paced by the wall clock
+};
+
+// as the configuration writes it
+inline const char* robot_kind_name(RobotKind kind) {
+  return kind == RobotKind::Sim ? "sim" : "cyberdog2_motor_sdk";
+}
+
+}  // namespace cerebellum

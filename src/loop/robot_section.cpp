@@ -1,0 +1,130 @@
+#include "loop/robot_section.hpp"
+
+#include <filesystem>
+#include <set>
+#include <utility>
+#include <vector>
+
+#include "io/lcm_highlevel/lcm_highlevel_config.hpp"
+#include "loop/yaml_section.hpp"
+
+namespace cerebellum {
+namespace {
+
+namespace fs = std::filesystem;
+
+constexpr const char* kMotorSdkSection = "cyberdog2_motor_sdk";
+// the simulation's own keys: a real robot has no model to load nor a pose to start in
+const std::set<std::string> kSimulationKeys{"initial_pose", "initial_height_m", "sensor_noise", "seed"};
+
+void read_simulation(const SectionReader& section, MujocoBackendConfig& robot) {
+  section.text("initial_pose", robot.initial_keyframe, {"lying", "stand"});
+  section.number("initial_height_m", robot.initial_height_m, 0.05, 2.0);
+  section.flag("sensor_noise", robot.noise.enabled);
+  section.unsigned_integer("seed", robot.noise.seed);
+}
+
+void read_motor_sdk_robot(const YAML::Node& node, const std::string& path, MotorSdkRobotConfig& robot) {
+  const std::string name = std::string("robot.") + kMotorSdkSection;
+  const SectionReader section(node, path, name,
+                              {"control_url", "estimator_url", "link_timeout_s", "activation_timeout_s",
+                               "motor_error_damping_kd", "position_jump_limit"});
+  for (const auto& [key, url] : {std::pair<const char*, std::string*>{"control_url", &robot.control_url},
+                                 std::pair<const char*, std::string*>{"estimator_url", &robot.estimator_url}}) {
+    section.text(key, *url);
+    if (const std::string problem = lcm_url_problem(*url); !problem.empty()) {
+      section.fail(name + "." + key, problem + ", got '" + *url + "'");
+    }
+  }
+  // below 4 ms two of the robot's 2 ms frames may be missed in a healthy link; above 0.5 s the
+  // robot's own err_flag bit 1 has already laid it down
+  section.number("link_timeout_s", robot.link_timeout_s, 0.004, 0.5);
+  section.number("activation_timeout_s", robot.activation_timeout_s, 1.0, 120.0);
+  section.number("motor_error_damping_kd", robot.motor_error_damping_kd, 0.5, robot::kCommandKdMax);
+  section.flag("position_jump_limit", robot.rules.position_mutation_limit);
+}
+
+// "239.255.76.67:7667" of "udpm://239.255.76.67:7667?ttl=0": where packets meet, whatever the ttl
+std::string lcm_endpoint(const std::string& url) {
+  const std::size_t start = url.find("://");
+  const std::size_t from = start == std::string::npos ? 0 : start + 3;
+  return url.substr(from, url.find('?', from) - from);
+}
+
+}  // namespace
+
+void read_robot_section(const YAML::Node& node, const std::string& path, const std::string& base_dir,
+                        McConfig& config) {
+  const SectionReader section(node, path, "robot",
+                              {"kind", "model", "initial_pose", "initial_height_m", "sensor_noise", "seed",
+                               kMotorSdkSection});
+  std::string kind = robot_kind_name(config.robot_kind);
+  section.text("kind", kind, {"sim", "cyberdog2_motor_sdk", "zsibot_shm"});
+  if (kind == "zsibot_shm") {
+    section.fail("robot.kind", "zsibot_shm is not built yet (issue 42); accepted now: sim, cyberdog2_motor_sdk");
+  }
+  config.robot_kind = kind == "sim" ? RobotKind::Sim : RobotKind::Cyberdog2MotorSdk;
+  // the model serves every kind: the two-leg stand designs its balance on it
+  std::string model;
+  section.path("model", model);
+  if (!model.empty()) {
+    const fs::path model_path(model);
+    config.robot.model_path =
+        (model_path.is_absolute() ? model_path : fs::path(base_dir) / model_path).lexically_normal().string();
+  }
+  if (config.robot_kind == RobotKind::Sim) {
+    if (section.has(kMotorSdkSection)) {
+      section.fail(std::string("robot.") + kMotorSdkSection,
+                   "applies only to robot.kind cyberdog2_motor_sdk (robot.kind is sim)");
+    }
+    read_simulation(section, config.robot);
+    return;
+  }
+  for (const std::string& key : kSimulationKeys) {
+    if (section.has(key)) {
+      section.fail("robot." + key, std::string("applies only to the simulated robot (robot.kind is ") + kind + ")");
+    }
+  }
+  if (section.has(kMotorSdkSection)) read_motor_sdk_robot(node[kMotorSdkSection], path, config.motor_sdk_robot);
+}
+
+void check_robot_fits(const YAML::Node& root, const std::string& path, McConfig& config) {
+  if (config.robot_kind == RobotKind::Sim) return;
+  const std::string kind = robot_kind_name(config.robot_kind);
+  const auto refuse = [&](const std::string& key, const std::string& what) {
+    throw ConfigError("config " + path + ": " + key + " " + what);
+  };
+  // the simulation's tools have nothing to act on: off unless the file asks, and then refused
+  if (root["sim_truth"] && root["sim_truth"]["rate_hz"] && config.sim_truth.rate_hz > 0.0) {
+    refuse("sim_truth.rate_hz", "must be 0 on a real robot: there is no simulator truth (robot.kind is " + kind + ")");
+  }
+  config.sim_truth.rate_hz = 0.0;
+  if (root["sim_command"] && root["sim_command"]["enabled"] && config.sim_command.enabled) {
+    refuse("sim_command.enabled",
+           "must be false on a real robot: push and fault act only on a simulation (robot.kind is " + kind + ")");
+  }
+  config.sim_command.enabled = false;
+  // a served interface on the robot's own link would read its own frames as the robot's (or the
+  // robot would read ours): each served url needs another port than the robot's two
+  const MotorSdkRobotConfig& link = config.motor_sdk_robot;
+  const std::vector<std::pair<std::string, std::string>> served{
+      {"motor_sdk.control_url", config.motor_sdk.control_url},
+      {"motor_sdk.estimator_url", config.motor_sdk.estimator_url},
+      {"highlevel.command_url", config.highlevel.command_url},
+      {"highlevel.response_url", config.highlevel.response_url},
+      {"highlevel.odometry_url", config.highlevel.odometry_url}};
+  const bool state_feedback = config.motor_sdk.enabled || config.highlevel.enabled;
+  for (const auto& [key, url] : served) {
+    const bool in_use = key.rfind("motor_sdk.", 0) == 0 ? state_feedback : config.highlevel.enabled;
+    if (!in_use) continue;
+    for (const auto& [robot_key, robot_url] :
+         {std::pair<const char*, const std::string&>{"control_url", link.control_url},
+          std::pair<const char*, const std::string&>{"estimator_url", link.estimator_url}}) {
+      if (lcm_endpoint(url) != lcm_endpoint(robot_url)) continue;
+      refuse(key, "'" + url + "' is the robot's own link (robot." + kMotorSdkSection + "." + robot_key +
+                      "): give the served interface another port");
+    }
+  }
+}
+
+}  // namespace cerebellum

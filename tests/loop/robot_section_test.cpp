@@ -1,0 +1,131 @@
+// The configuration's robot: section: which robot the MC drives and its settings, with a precise
+// error naming the key and the file for every mistake, and what a real robot cannot have refused.
+#include "loop/mc_config.hpp"
+
+#include <gtest/gtest.h>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <string>
+
+namespace cerebellum {
+namespace {
+
+// in a folder of this process: ctest runs the cases of this file in parallel processes
+std::string write_file(const std::string& text) {
+  const std::string dir = ::testing::TempDir() + "robot_section_test_" + std::to_string(::getpid());
+  ::mkdir(dir.c_str(), 0700);
+  const std::string path = dir + "/robot.yaml";
+  std::ofstream(path) << text;
+  return path;
+}
+
+// the error of loading text (it must name the file), or "" when it loads
+std::string load_error(const std::string& text) {
+  const std::string path = write_file(text);
+  try {
+    load_config(path);
+  } catch (const ConfigError& e) {
+    const std::string error = e.what();
+    EXPECT_NE(error.find(path), std::string::npos) << "the error names the file: " << error;
+    return error;
+  }
+  return "";
+}
+
+// a motor SDK robot, its link given by link (YAML flow entries), its served interfaces off the
+// robot's link ports; extra: more sections
+std::string motor_sdk_robot(const std::string& link = "", const std::string& extra = "") {
+  return "robot:\n  kind: cyberdog2_motor_sdk\n  cyberdog2_motor_sdk: {" + link +
+         "}\n"
+         "highlevel: {odometry_url: 'udpm://239.255.76.67:7672?ttl=0'}\n"
+         "motor_sdk: {enabled: false, control_url: 'udpm://239.255.76.67:7767?ttl=0',"
+         " estimator_url: 'udpm://239.255.76.67:7769?ttl=0'}\n" +
+         extra;
+}
+
+TEST(RobotSection, TheRobotIsTheSimulationUnlessTheFileNamesAnother) {
+  EXPECT_EQ(default_config().robot_kind, RobotKind::Sim);
+  EXPECT_EQ(load_config(write_file("robot: {kind: sim, seed: 3}\n")).robot_kind, RobotKind::Sim);
+}
+
+TEST(RobotSection, AMotorSdkRobotTakesItsLinkSettingsAndDefaultsToTheVendorsTimings) {
+  const McConfig defaults = load_config(write_file(motor_sdk_robot()));
+  EXPECT_EQ(defaults.robot_kind, RobotKind::Cyberdog2MotorSdk);
+  EXPECT_DOUBLE_EQ(defaults.motor_sdk_robot.link_timeout_s, 0.020);
+  EXPECT_NE(defaults.motor_sdk_robot.control_url.find("ttl=0"), std::string::npos) << "this host only by default";
+  EXPECT_TRUE(defaults.motor_sdk_robot.rules.position_mutation_limit) << "the vendor's 8 / 10 / 12 degree clamp";
+  const McConfig config = load_config(write_file(motor_sdk_robot(
+      "control_url: 'udpm://239.255.76.67:7667?ttl=255', link_timeout_s: 0.05, position_jump_limit: false")));
+  EXPECT_EQ(config.motor_sdk_robot.control_url, "udpm://239.255.76.67:7667?ttl=255");
+  EXPECT_DOUBLE_EQ(config.motor_sdk_robot.link_timeout_s, 0.05);
+  EXPECT_FALSE(config.motor_sdk_robot.rules.position_mutation_limit);
+}
+
+TEST(RobotSection, AnUnknownKindIsRefusedWithTheAcceptedOnes) {
+  const std::string error = load_error("robot: {kind: spot}\n");
+  EXPECT_NE(error.find("robot.kind must be one of: cyberdog2_motor_sdk, sim, zsibot_shm; got 'spot'"),
+            std::string::npos)
+      << error;
+}
+
+TEST(RobotSection, TheZsibotRobotIsRefusedAsNotBuiltYet) {
+  const std::string error = load_error("robot: {kind: zsibot_shm}\n");
+  EXPECT_NE(error.find("robot.kind zsibot_shm is not built yet"), std::string::npos) << error;
+}
+
+TEST(RobotSection, SimulationKeysAreRefusedOnARealRobot) {
+  const std::string error = load_error("robot: {kind: cyberdog2_motor_sdk, initial_pose: stand}\n");
+  EXPECT_NE(error.find("robot.initial_pose applies only to the simulated robot (robot.kind is cyberdog2_motor_sdk)"),
+            std::string::npos)
+      << error;
+}
+
+TEST(RobotSection, TheMotorSdkLinkIsRefusedOnTheSimulation) {
+  const std::string error = load_error("robot: {kind: sim, cyberdog2_motor_sdk: {link_timeout_s: 0.02}}\n");
+  EXPECT_NE(error.find("robot.cyberdog2_motor_sdk applies only to robot.kind cyberdog2_motor_sdk"), std::string::npos)
+      << error;
+}
+
+TEST(RobotSection, EveryLinkSettingIsCheckedByName) {
+  const auto link_error = [](const std::string& entry) { return load_error(motor_sdk_robot(entry)); };
+  std::string error = link_error("link_timeout_s: 0.001");
+  EXPECT_NE(error.find("robot.cyberdog2_motor_sdk.link_timeout_s must be in [0.004, 0.5], got 0.001"),
+            std::string::npos)
+      << error;
+  error = link_error("control_url: 'not a url'");
+  EXPECT_NE(error.find("robot.cyberdog2_motor_sdk.control_url"), std::string::npos) << error;
+  EXPECT_NE(error.find("got 'not a url'"), std::string::npos) << error;
+  error = link_error("link_timeout: 0.02");
+  EXPECT_NE(error.find("robot.cyberdog2_motor_sdk.link_timeout is not a known key"), std::string::npos) << error;
+  error = link_error("position_jump_limit: sometimes");
+  EXPECT_NE(error.find("robot.cyberdog2_motor_sdk.position_jump_limit must be true or false"), std::string::npos)
+      << error;
+}
+
+TEST(RobotSection, TheSimulationsToolsAreOffOnARealRobotAndRefusedWhenAskedFor) {
+  const McConfig config = load_config(write_file(motor_sdk_robot()));
+  EXPECT_EQ(config.sim_truth.rate_hz, 0.0) << "no simulator truth on a real robot";
+  EXPECT_FALSE(config.sim_command.enabled) << "push and fault act only on a simulation";
+  std::string error = load_error(motor_sdk_robot("", "sim_truth: {rate_hz: 50}\n"));
+  EXPECT_NE(error.find("sim_truth.rate_hz must be 0 on a real robot"), std::string::npos) << error;
+  error = load_error(motor_sdk_robot("", "sim_command: {enabled: true}\n"));
+  EXPECT_NE(error.find("sim_command.enabled must be false on a real robot"), std::string::npos) << error;
+}
+
+TEST(RobotSection, AServedInterfaceOnTheRobotsOwnLinkIsRefused) {
+  // the defaults serve the motor SDK and the odometry on 7667, the robot's link port
+  std::string error = load_error("robot: {kind: cyberdog2_motor_sdk}\n");
+  EXPECT_NE(error.find("is the robot's own link (robot.cyberdog2_motor_sdk.control_url)"), std::string::npos)
+      << error;
+  // whatever the ttl: packets meet on the group and the port (the high-level interface, on by
+  // default, publishes the state feedback on motor_sdk's urls)
+  error = load_error(motor_sdk_robot("estimator_url: 'udpm://239.255.76.67:7769?ttl=255'"));
+  EXPECT_NE(error.find("motor_sdk.estimator_url"), std::string::npos) << error;
+  EXPECT_NE(error.find("robot.cyberdog2_motor_sdk.estimator_url"), std::string::npos) << error;
+}
+
+}  // namespace
+}  // namespace cerebellum
