@@ -9,15 +9,15 @@ the robot followed the pull, and once released it stands (all four feet down, tr
     PYTHONPATH=<generated python types> passive_trot_pull.py <cerebellum> WAIT PULL
 """
 import math
-import select
 import subprocess
 import sys
-import time
 
 import lcm
 from robot_control_cmd_lcmt import robot_control_cmd_lcmt
 from robot_control_response_lcmt import robot_control_response_lcmt
 from sim_truth_lcmt import sim_truth_lcmt
+
+import heartbeat_spin
 
 CMD_URL = "udpm://239.255.76.67:7671?ttl=0"
 RESPONSE_URL = "udpm://239.255.76.67:7670?ttl=0"
@@ -43,22 +43,8 @@ def main():
         commands.publish("robot_control_cmd", msg.encode())
 
     def spin(seconds, each=None, until=None):
-        end = time.time() + seconds
-        beat = time.time() + 0.1
-        while time.time() < end:
-            if time.time() >= beat:
-                commands.publish("robot_control_cmd", msg.encode())
-                beat += 0.1
-            ready, _, _ = select.select([responses.fileno(), truth.fileno()], [], [], 0.01)
-            if responses.fileno() in ready:
-                responses.handle()
-            if truth.fileno() in ready:
-                truth.handle()
-                if each:
-                    each(seen["truth"])
-            if until and until():
-                return True
-        return False
+        on_truth = (lambda lc: each(seen["truth"]) if lc is truth else None) if each else None
+        return heartbeat_spin.spin(commands, msg, [responses, truth], seconds, until, on_truth)
 
     send(12, 0)
     if not spin(15.0, until=lambda: seen["response"] is not None and seen["response"].mode == 12

@@ -11,7 +11,6 @@ and damps within 50 ms of its own time (its log).
 import math
 import os
 import re
-import select
 import signal
 import sys
 import time
@@ -20,6 +19,8 @@ import lcm
 from robot_control_cmd_lcmt import robot_control_cmd_lcmt
 from robot_control_response_lcmt import robot_control_response_lcmt
 from sim_truth_lcmt import sim_truth_lcmt
+
+import heartbeat_spin
 
 CMD_URL = "udpm://239.255.76.67:7671?ttl=0"       # B's high-level interface
 RESPONSE_URL = "udpm://239.255.76.67:7670?ttl=0"
@@ -62,22 +63,9 @@ def main():
     def truth_s():
         return seen["truth"][-1].timestamp * 1e-9 if seen["truth"] else 0.0
 
-    # wall time only bounds the wait (generous on a loaded machine); robot time judges
+    # wall time only bounds the waits (generous on a loaded machine); robot time judges
     def spin(wall_limit_s, until):
-        end = time.time() + wall_limit_s
-        beat = time.time() + 0.1
-        while time.time() < end:
-            if time.time() >= beat:
-                commands.publish("robot_control_cmd", msg.encode())
-                beat += 0.1
-            ready, _, _ = select.select([responses.fileno(), truth.fileno()], [], [], 0.01)
-            if responses.fileno() in ready:
-                responses.handle()
-            if truth.fileno() in ready:
-                truth.handle()
-            if until():
-                return True
-        return False
+        return heartbeat_spin.spin(commands, msg, [responses, truth], wall_limit_s, until)
 
     send(12, 0)
     if not spin(60.0, lambda: seen["response"] is not None and seen["response"].mode == 12

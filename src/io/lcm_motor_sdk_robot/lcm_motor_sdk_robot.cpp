@@ -38,14 +38,20 @@ bool finite(const state_estimator_lcmt& m) {
   return all_finite(m.quat) && all_finite(m.omegaBody) && all_finite(m.aBody);
 }
 
-// decodes a packet of a fixed-size type, counting what is malformed or not finite; true when usable
-template <typename Message>
-bool take_packet(const lcm::ReceiveBuffer* buffer, Message& message, MotorSdkRobotRejections& rejected) {
+bool finite(const motor_ctrl_state_lcmt& m) { return std::isfinite(m.ctrl_topic_interval); }
+
+// one packet from the robot: decoded (fingerprint, exact size), its values finite, then made into
+// what the loop takes and handed over; each refusal counted
+template <typename Message, typename Ring, typename Make>
+void receive(const lcm::ReceiveBuffer* buffer, Ring& ring, MotorSdkRobotRejections& rejected, Make make) {
+  Message message{};
   if (decode_fixed_size(buffer->data, buffer->data_size, message) != WireDecode::Ok) {
     rejected.malformed.add();
-    return false;
+  } else if (!finite(message)) {
+    rejected.non_finite.add();
+  } else if (!ring.try_push(make(message))) {
+    rejected.dropped.add();
   }
-  return true;
 }
 
 }  // namespace
@@ -104,29 +110,21 @@ void LcmMotorSdkRobot::step() {
 }
 
 void LcmMotorSdkRobot::on_spi_data(const lcm::ReceiveBuffer* buffer, const std::string&) {
-  spi_data_t message{};
-  if (!take_packet(buffer, message, rejected_)) return;
-  if (!finite(message)) {
-    rejected_.non_finite.add();
-    return;
-  }
-  if (!joints_.try_push(Joints{joint_state_from_spi_data(message), wall_seconds()})) rejected_.dropped.add();
+  receive<spi_data_t>(buffer, joints_, rejected_, [](const spi_data_t& message) {
+    return Joints{joint_state_from_spi_data(message), wall_seconds()};
+  });
 }
 
 void LcmMotorSdkRobot::on_state_estimator(const lcm::ReceiveBuffer* buffer, const std::string&) {
-  state_estimator_lcmt message{};
-  if (!take_packet(buffer, message, rejected_)) return;
-  if (!finite(message)) {
-    rejected_.non_finite.add();
-    return;
-  }
-  if (!imu_.try_push(Imu{imu_from_state_estimator(message), wall_seconds()})) rejected_.dropped.add();
+  receive<state_estimator_lcmt>(buffer, imu_, rejected_, [](const state_estimator_lcmt& message) {
+    return Imu{imu_from_state_estimator(message), wall_seconds()};
+  });
 }
 
 void LcmMotorSdkRobot::on_ctrl_state(const lcm::ReceiveBuffer* buffer, const std::string&) {
-  motor_ctrl_state_lcmt message{};
-  if (!take_packet(buffer, message, rejected_)) return;
-  if (!err_flags_.try_push(static_cast<std::uint16_t>(message.err_flag))) rejected_.dropped.add();
+  receive<motor_ctrl_state_lcmt>(buffer, err_flags_, rejected_, [](const motor_ctrl_state_lcmt& message) {
+    return static_cast<std::uint16_t>(message.err_flag);
+  });
 }
 
 void LcmMotorSdkRobot::log_changes(const StatusAt& now) {
