@@ -8,7 +8,7 @@ packages=(
   libgtest-dev libgmock-dev libbenchmark-dev libalglib-dev
   iproute2 util-linux python3 python3-matplotlib python3-dev python3-setuptools python3-toml
   libsdl2-dev
-  libglfw3-dev libegl-dev libegl-mesa0 libgl1-mesa-dri ffmpeg xvfb xauth
+  libglfw3-dev libegl-dev libegl-mesa0 libgl1-mesa-dri ffmpeg xvfb xauth xdotool
   clang libclang-rt-14-dev
 )
 missing=()

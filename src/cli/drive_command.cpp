@@ -10,14 +10,13 @@
 
 #include "cli/cmd_options.hpp"
 #include "cli/drive_options.hpp"
-#include "cli/pad_mapping.hpp"
+#include "teleop/pad_mapping.hpp"
 #include "cli/sdl_gamepad.hpp"
 #include "cli/stop_signal.hpp"
 #include "cli/virtual_pad.hpp"
 #include "control/locomotion/gait_table.hpp"
 #include "core/text_file.hpp"
 #include "io/lcm_highlevel/highlevel_wire.hpp"
-#include "loop/lockstep_client.hpp"
 
 namespace cerebellum {
 namespace {
@@ -25,7 +24,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 // the pad is sampled, and the command repeated, at the rate the interface's examples use
-constexpr auto kSamplePeriod = std::chrono::milliseconds(static_cast<int>(LockstepClient::kHeartbeatPeriodS * 1000.0));
+constexpr auto kSamplePeriod = std::chrono::milliseconds(static_cast<int>(kClientHeartbeatPeriodS * 1000.0));
 // how often SDL's events are taken: a button press is sent at once, not at the next sample
 constexpr auto kPollPeriod = std::chrono::milliseconds(10);
 // a virtual pad's script is a few lines

@@ -4,7 +4,7 @@
 #include <stdexcept>
 
 #include "cli/option_number.hpp"
-#include "cli/pad_mapping.hpp"
+#include "teleop/pad_mapping.hpp"
 
 namespace cerebellum {
 

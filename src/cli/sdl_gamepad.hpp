@@ -5,7 +5,7 @@
 #include <array>
 #include <string>
 
-#include "cli/pad_mapping.hpp"
+#include "teleop/pad_mapping.hpp"
 
 struct _SDL_GameController;
 

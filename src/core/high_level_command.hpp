@@ -93,16 +93,25 @@ struct HighLevelCommand {
 };
 
 // the high-level clients: one holds the robot at a time (HighLevelMachine's lease)
-enum class HighLevelSource : std::uint8_t { CyberDog2Lcm = 0, AlienGoUdp = 1 };
-inline constexpr std::size_t kHighLevelSourceCount = 2;
+// (the viewer's keyboard: a person driving from `cerebellum sim --viewer`, in the MC's own process)
+enum class HighLevelSource : std::uint8_t { CyberDog2Lcm = 0, AlienGoUdp = 1, ViewerKeyboard = 2 };
+inline constexpr std::size_t kHighLevelSourceCount = 3;
 constexpr const char* source_name(HighLevelSource source) {
-  return source == HighLevelSource::CyberDog2Lcm ? "the CyberDog2 LCM client (robot_control_cmd)"
-                                                 : "the AlienGo UDP client (HighCmd)";
+  switch (source) {
+    case HighLevelSource::CyberDog2Lcm: return "the CyberDog2 LCM client (robot_control_cmd)";
+    case HighLevelSource::AlienGoUdp: return "the AlienGo UDP client (HighCmd)";
+    case HighLevelSource::ViewerKeyboard: return "the viewer's keyboard";
+  }
+  return "an unknown client";
 }
 
 // the most commands of one client the machine takes in one tick: whatever arrives, a tick's input
 // work is bounded (a client sending faster fills only its own ring, where the rest is dropped)
 inline constexpr std::size_t kCommandsPerSourcePerTick = 8;
+
+// how often a client repeats its command as the heartbeat: the rate the seeds' examples send at
+// (10 Hz), well inside the machine's 0.5 s timeout
+inline constexpr double kClientHeartbeatPeriodS = 0.1;
 
 // a command with the robot time it arrived at and the client it came from
 struct TimedCommand {

@@ -31,7 +31,7 @@ class LockstepClient {
     run(command, seconds, [](const CycleRecord&) {});
   }
 
-  static constexpr double kHeartbeatPeriodS = 0.1;
+  static constexpr double kHeartbeatPeriodS = kClientHeartbeatPeriodS;
 
  private:
   Mc& mc_;

@@ -14,9 +14,9 @@ void ClientBook::refused_not_holder(HighLevelSource source, const HighLevelComma
   if (last == command.life_count) return;
   last = command.life_count;
   refusals(source).try_push({command.mode, command.gait_id, from_mode,
-                             source == HighLevelSource::CyberDog2Lcm
-                                 ? "another high-level client holds the robot"
-                                 : "another high-level client holds the robot (HighCmd)",
+                             source == HighLevelSource::AlienGoUdp
+                                 ? "another high-level client holds the robot (HighCmd)"
+                                 : "another high-level client holds the robot",
                              source_name(holder)});
 }
 

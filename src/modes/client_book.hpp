@@ -36,7 +36,13 @@ class ClientBook {
 
   std::array<ClientCounters, kHighLevelSourceCount> counters_;
   std::array<ClientNoteRing, kHighLevelSourceCount> refusals_;
-  std::array<int, kHighLevelSourceCount> refused_life_count_{-1, -1};  // the last one noted per client
+  std::array<int, kHighLevelSourceCount> refused_life_count_ = no_life_counts();  // the last one noted per client
+
+  static std::array<int, kHighLevelSourceCount> no_life_counts() {
+    std::array<int, kHighLevelSourceCount> none{};
+    none.fill(-1);
+    return none;
+  }
 };
 
 }  // namespace cerebellum

@@ -3,6 +3,7 @@
 #include <chrono>
 #include <condition_variable>
 #include <cstdio>
+#include <optional>
 #include <stdexcept>
 #include <thread>
 
@@ -62,9 +63,37 @@ bool ViewerExchange::latest(SimSnapshot& out) {
 
 ViewerSession::ViewerSession(Mc& mc)
     : mc_(mc),
-      window_(std::make_unique<ViewerWindow>(mc.simulation().model(), "cerebellum: simulated CyberDog2")),
-      exchange_(mc.simulation()) {
+      window_(std::make_unique<ViewerWindow>(mc.simulation().model(), "cerebellum: simulated CyberDog2",
+                                             keyboard_mapping_help())),
+      exchange_(mc.simulation()),
+      keyboard_driver_(mc.client_port(HighLevelSource::ViewerKeyboard)) {
   mc.loop().add_observer(exchange_);
+}
+
+void ViewerSession::drive_from_keys(double now_s) {
+  bool focus_lost = false;
+  for (const ViewerKey& key : window_->take_keys(focus_lost)) keyboard_.key(key.key_code, key.down);
+  if (focus_lost) keyboard_.release_all();
+  const bool pressed = keyboard_.pressed_since_sample();
+  keyboard_driver_.drive(keyboard_.sample(), pressed, now_s);
+}
+
+std::string ViewerSession::keyboard_text() {
+  const std::optional<HighLevelCommand> command = keyboard_driver_.current();
+  if (!command) return "keys: none pressed yet (1 stands the robot up)";
+  while (const std::optional<ClientNote> note = keyboard_driver_.next_note()) {
+    if (!note->clamped) {
+      keyboard_refusal_ = note->reason;
+      refused_life_count_ = command->life_count;
+    }
+  }
+  if (refused_life_count_ != command->life_count) keyboard_refusal_.clear();  // a newer command since
+  const ModeInfo* mode = find_mode(command->mode);
+  char text[192];
+  std::snprintf(text, sizeof text, "keys: mode %d (%s) gait %d%s%s", command->mode,
+                mode != nullptr ? mode->name : "?", command->gait_id, keyboard_refusal_.empty() ? "" : ": refused: ",
+                keyboard_refusal_.c_str());
+  return text;
 }
 
 ViewerSession::~ViewerSession() = default;
@@ -126,7 +155,10 @@ RunStats ViewerSession::run(const RunOptions& options, const std::atomic<bool>& 
       set_pace(shown);
     }
     mc_.simulation().request_push(window_->push());
-    if (exchange_.latest(snapshot)) window_->draw(snapshot, run_state_text(shown, options.speed));
+    if (exchange_.latest(snapshot)) {
+      drive_from_keys(snapshot.time_s);
+      window_->draw(snapshot, run_state_text(shown, options.speed) + "\n" + keyboard_text());
+    }
     next_frame += kFramePeriod;
     std::this_thread::sleep_until(next_frame);
     if (next_frame < std::chrono::steady_clock::now()) next_frame = std::chrono::steady_clock::now();

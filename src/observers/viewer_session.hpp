@@ -1,7 +1,9 @@
 // `cerebellum sim --viewer`: the live window in the main thread, the control loop in its own
 // thread. The loop hands a snapshot (qpos, qvel, status) over a mutex each tick; the window posts
 // pushes to the simulation, which applies them at its own steps; pause and slow motion restart
-// the paced run at the new speed.
+// the paced run at the new speed. The window's other keys drive the robot (teleop/keyboard_pad): the
+// viewer is then a high-level client of its own (HighLevelSource::ViewerKeyboard), holding the
+// robot like any other client and handing its commands through its ClientPort from this thread.
 #pragma once
 
 #include <atomic>
@@ -12,6 +14,8 @@
 #include "loop/control_loop.hpp"
 #include "observers/viewer_snapshot.hpp"
 #include "backend/simulation.hpp"
+#include "teleop/keyboard_pad.hpp"
+#include "teleop/port_driver.hpp"
 
 namespace cerebellum {
 
@@ -49,9 +53,18 @@ class ViewerSession {
   RunStats run(const RunOptions& options, const std::atomic<bool>& stop, const std::string& screenshot_png);
 
  private:
+  // the keys since the last frame into the keyboard's pad, and the pad to the MC at robot time now_s
+  void drive_from_keys(double now_s);
+  // the keyboard's command and its last refusal, for the overlay
+  std::string keyboard_text();
+
   Mc& mc_;
   std::unique_ptr<ViewerWindow> window_;
   ViewerExchange exchange_;
+  KeyboardPad keyboard_;
+  PortDriver keyboard_driver_;
+  std::string keyboard_refusal_;
+  int refused_life_count_ = -1;
 };
 
 }  // namespace cerebellum

@@ -10,7 +10,10 @@
 namespace cerebellum {
 namespace {
 
-constexpr const char* kHelp = "space  pause\nS  slow motion\nF  follow\nctrl+right drag  push\nEsc  quit";
+// the window's own keys; the others are the caller's (the keyboard drives the robot)
+constexpr const char* kHelp = "P  pause\nM  slow motion\nC  follow\nctrl+right drag  push\nEsc  quit";
+// a person holding a key down sends one press, not a stream of them
+constexpr std::size_t kMaxPendingKeys = 64;
 
 std::string glfw_error() {
   const char* description = nullptr;
@@ -22,7 +25,9 @@ ViewerWindow& owner(GLFWwindow* window) { return *static_cast<ViewerWindow*>(glf
 
 }  // namespace
 
-ViewerWindow::ViewerWindow(const mjModel* model, const std::string& title, int width, int height) {
+ViewerWindow::ViewerWindow(const mjModel* model, const std::string& title, const std::string& more_help, int width,
+                           int height)
+    : help_(more_help.empty() ? std::string(kHelp) : std::string(kHelp) + "\n" + more_help) {
   if (!glfwInit()) {
     throw std::runtime_error("viewer: no display to open a window on (" + glfw_error() +
                              "). Run it on a desktop, or under a virtual display: xvfb-run -a cerebellum sim "
@@ -46,6 +51,7 @@ ViewerWindow::ViewerWindow(const mjModel* model, const std::string& title, int w
   glfwSetMouseButtonCallback(window_, &ViewerWindow::on_mouse_button);
   glfwSetCursorPosCallback(window_, &ViewerWindow::on_cursor);
   glfwSetScrollCallback(window_, &ViewerWindow::on_scroll);
+  glfwSetWindowFocusCallback(window_, &ViewerWindow::on_focus);
 }
 
 ViewerWindow::~ViewerWindow() {
@@ -72,11 +78,19 @@ PushRequest ViewerWindow::push() const {
   return request;
 }
 
+std::vector<ViewerKey> ViewerWindow::take_keys(bool& focus_lost) {
+  focus_lost = focus_lost_;
+  focus_lost_ = false;
+  std::vector<ViewerKey> keys;
+  keys.swap(keys_);
+  return keys;
+}
+
 mjrRect ViewerWindow::render(const SimSnapshot& snapshot, const std::string& run_state) {
   mjrRect viewport{0, 0, 0, 0};
   glfwGetFramebufferSize(window_, &viewport.width, &viewport.height);
   renderer_->update(snapshot, &perturbation_);
-  renderer_->render(viewport, status_overlay(snapshot, run_state), kHelp);
+  renderer_->render(viewport, status_overlay(snapshot, run_state), help_);
   return viewport;
 }
 
@@ -96,21 +110,37 @@ bool ViewerWindow::draw_and_save(const SimSnapshot& snapshot, const std::string&
 }
 
 void ViewerWindow::on_key(GLFWwindow* window, int key, int, int action, int) {
-  if (action != GLFW_PRESS) return;
+  if (action == GLFW_REPEAT) return;  // a held key stays down until its release
   ViewerWindow& self = owner(window);
+  const bool press = action == GLFW_PRESS;
   switch (key) {
-    case GLFW_KEY_SPACE:
-      self.controls_.paused = !self.controls_.paused;
-      self.pace_changed_ = true;
+    case GLFW_KEY_P:
+      if (press) {
+        self.controls_.paused = !self.controls_.paused;
+        self.pace_changed_ = true;
+      }
       break;
-    case GLFW_KEY_S:
-      self.controls_.slow_motion = !self.controls_.slow_motion;
-      self.pace_changed_ = true;
+    case GLFW_KEY_M:
+      if (press) {
+        self.controls_.slow_motion = !self.controls_.slow_motion;
+        self.pace_changed_ = true;
+      }
       break;
-    case GLFW_KEY_F: self.renderer_->set_follow(!self.renderer_->following()); break;
-    case GLFW_KEY_ESCAPE: self.controls_.quit = true; break;
-    default: break;
+    case GLFW_KEY_C:
+      if (press) self.renderer_->set_follow(!self.renderer_->following());
+      break;
+    case GLFW_KEY_ESCAPE:
+      if (press) self.controls_.quit = true;
+      break;
+    default:
+      // bounded: the caller takes them every frame
+      if (self.keys_.size() < kMaxPendingKeys) self.keys_.push_back({key, press});
+      break;
   }
+}
+
+void ViewerWindow::on_focus(GLFWwindow* window, int focused) {
+  if (!focused) owner(window).focus_lost_ = true;
 }
 
 void ViewerWindow::on_mouse_button(GLFWwindow* window, int button, int action, int mods) {

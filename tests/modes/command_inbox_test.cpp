@@ -11,6 +11,7 @@ namespace {
 
 constexpr auto kLcm = HighLevelSource::CyberDog2Lcm;
 constexpr auto kAlienGo = HighLevelSource::AlienGoUdp;
+constexpr auto kKeys = HighLevelSource::ViewerKeyboard;
 
 TimedCommand input(HighLevelSource source, int value) {
   TimedCommand t;
@@ -58,9 +59,10 @@ TEST(CommandInbox, TheSourceTakenFirstRotatesFromCallToCall) {
   for (int call = 0; call < 4; ++call) {
     inbox.push(input(kLcm, call));
     inbox.push(input(kAlienGo, call));
+    inbox.push(input(kKeys, call));
     firsts.push_back(take_all_once(inbox).front().source);
   }
-  EXPECT_EQ(firsts, (std::vector<HighLevelSource>{kLcm, kAlienGo, kLcm, kAlienGo}));
+  EXPECT_EQ(firsts, (std::vector<HighLevelSource>{kLcm, kAlienGo, kKeys, kLcm}));
 }
 
 TEST(CommandInbox, AFullSourceRefusesAndCountsOnlyItsOwnCommands) {

@@ -1,4 +1,4 @@
-#include "cli/pad_mapping.hpp"
+#include "teleop/pad_mapping.hpp"
 
 #include <cmath>
 #include <cstdio>

@@ -1,6 +1,6 @@
-// The gamepad's mapping (cli/pad_mapping), checked against numbers worked out by hand from the
+// The gamepad's mapping (teleop/pad_mapping), checked against numbers worked out by hand from the
 // reference's gait table (slow trot 27: vx -0.6..0.6 m/s, vy -0.2..0.2 m/s, yaw -1.3..1.3 rad/s)
-#include "cli/pad_mapping.hpp"
+#include "teleop/pad_mapping.hpp"
 
 #include <gtest/gtest.h>
 
