@@ -80,7 +80,7 @@ void ViewerSession::drive_from_keys(double now_s) {
 
 std::string ViewerSession::keyboard_text() {
   const std::optional<HighLevelCommand> command = keyboard_driver_.current();
-  if (!command) return "keys: none pressed yet (1 stands the robot up)";
+  if (!command) return "none pressed yet (1 stands the robot up)";
   while (const std::optional<ClientNote> note = keyboard_driver_.next_note()) {
     if (!note->clamped) {
       keyboard_refusal_ = note->reason;
@@ -90,7 +90,7 @@ std::string ViewerSession::keyboard_text() {
   if (refused_life_count_ != command->life_count) keyboard_refusal_.clear();  // a newer command since
   const ModeInfo* mode = find_mode(command->mode);
   char text[192];
-  std::snprintf(text, sizeof text, "keys: mode %d (%s) gait %d%s%s", command->mode,
+  std::snprintf(text, sizeof text, "sent mode %d (%s) gait %d%s%s", command->mode,
                 mode != nullptr ? mode->name : "?", command->gait_id, keyboard_refusal_.empty() ? "" : ": refused: ",
                 keyboard_refusal_.c_str());
   return text;
@@ -157,7 +157,7 @@ RunStats ViewerSession::run(const RunOptions& options, const std::atomic<bool>& 
     mc_.simulation().request_push(window_->push());
     if (exchange_.latest(snapshot)) {
       drive_from_keys(snapshot.time_s);
-      window_->draw(snapshot, run_state_text(shown, options.speed) + "\n" + keyboard_text());
+      window_->draw(snapshot, run_state_text(shown, options.speed), keyboard_text());
     }
     next_frame += kFramePeriod;
     std::this_thread::sleep_until(next_frame);
@@ -168,7 +168,7 @@ RunStats ViewerSession::run(const RunOptions& options, const std::atomic<bool>& 
 
   if (!screenshot_png.empty()) {
     if (!exchange_.latest(snapshot)) throw std::runtime_error("viewer: no frame to save (the loop never ticked)");
-    if (!window_->draw_and_save(snapshot, run_state_text(shown, options.speed), screenshot_png)) {
+    if (!window_->draw_and_save(snapshot, run_state_text(shown, options.speed), keyboard_text(), screenshot_png)) {
       throw std::runtime_error("viewer: cannot save the screenshot to " + screenshot_png);
     }
   }

@@ -32,7 +32,7 @@ const char* switch_status_name(SwitchStatus status) {
   return "unknown";
 }
 
-OverlayText status_overlay(const SimSnapshot& snapshot, const std::string& run_state) {
+OverlayText status_overlay(const SimSnapshot& snapshot, const std::string& run_state, const std::string& keys_state) {
   const auto& est = snapshot.estimated_velocity_body;
   const auto& truth = snapshot.true_velocity_body;
   const auto& cmd = snapshot.commanded_velocity;
@@ -68,6 +68,10 @@ OverlayText status_overlay(const SimSnapshot& snapshot, const std::string& run_s
   if (!run_state.empty()) {
     text.titles += "\nrun";
     text.values += "\n" + run_state;
+  }
+  if (!keys_state.empty()) {
+    text.titles += "\nkeys";
+    text.values += "\n" + keys_state;
   }
   return text;
 }

@@ -19,7 +19,9 @@ std::string mode_name(int mode);
 const char* switch_status_name(SwitchStatus status);
 
 // time, mode, gait, switch status, estimated and true (simulator) velocity and height;
-// run_state: a last row such as "running 1x" or "paused" (empty: no row)
-OverlayText status_overlay(const SimSnapshot& snapshot, const std::string& run_state);
+// run_state: a row such as "running 1x" or "paused" (empty: no row); keys_state: a last row, the
+// viewer keyboard's command (empty: no row)
+OverlayText status_overlay(const SimSnapshot& snapshot, const std::string& run_state,
+                           const std::string& keys_state = "");
 
 }  // namespace cerebellum

@@ -86,22 +86,22 @@ std::vector<ViewerKey> ViewerWindow::take_keys(bool& focus_lost) {
   return keys;
 }
 
-mjrRect ViewerWindow::render(const SimSnapshot& snapshot, const std::string& run_state) {
+mjrRect ViewerWindow::render(const SimSnapshot& snapshot, const std::string& run_state, const std::string& keys_state) {
   mjrRect viewport{0, 0, 0, 0};
   glfwGetFramebufferSize(window_, &viewport.width, &viewport.height);
   renderer_->update(snapshot, &perturbation_);
-  renderer_->render(viewport, status_overlay(snapshot, run_state), help_);
+  renderer_->render(viewport, status_overlay(snapshot, run_state, keys_state), help_);
   return viewport;
 }
 
-void ViewerWindow::draw(const SimSnapshot& snapshot, const std::string& run_state) {
-  render(snapshot, run_state);
+void ViewerWindow::draw(const SimSnapshot& snapshot, const std::string& run_state, const std::string& keys_state) {
+  render(snapshot, run_state, keys_state);
   glfwSwapBuffers(window_);
 }
 
 bool ViewerWindow::draw_and_save(const SimSnapshot& snapshot, const std::string& run_state,
-                                 const std::string& png_path) {
-  const mjrRect viewport = render(snapshot, run_state);
+                                 const std::string& keys_state, const std::string& png_path) {
+  const mjrRect viewport = render(snapshot, run_state, keys_state);
   std::vector<std::uint8_t> rgb(3 * static_cast<std::size_t>(viewport.width) * viewport.height);
   renderer_->read_rgb(viewport, rgb.data());
   glfwSwapBuffers(window_);

@@ -49,10 +49,11 @@ class ViewerWindow {
   // keyboard since the last call (keys held then are released where the window cannot see it)
   std::vector<ViewerKey> take_keys(bool& focus_lost);
 
-  // draws the snapshot with the status overlay and shows it
-  void draw(const SimSnapshot& snapshot, const std::string& run_state);
+  // draws the snapshot with the status overlay (run_state and keys_state: its last rows) and shows it
+  void draw(const SimSnapshot& snapshot, const std::string& run_state, const std::string& keys_state);
   // draws like draw() and also saves the frame to a .png file (through ffmpeg); false on failure
-  bool draw_and_save(const SimSnapshot& snapshot, const std::string& run_state, const std::string& png_path);
+  bool draw_and_save(const SimSnapshot& snapshot, const std::string& run_state, const std::string& keys_state,
+                     const std::string& png_path);
 
  private:
   static void on_key(GLFWwindow* window, int key, int scancode, int action, int mods);
@@ -60,7 +61,7 @@ class ViewerWindow {
   static void on_cursor(GLFWwindow* window, double x, double y);
   static void on_scroll(GLFWwindow* window, double dx, double dy);
   static void on_focus(GLFWwindow* window, int focused);
-  mjrRect render(const SimSnapshot& snapshot, const std::string& run_state);
+  mjrRect render(const SimSnapshot& snapshot, const std::string& run_state, const std::string& keys_state);
 
   GLFWwindow* window_ = nullptr;
   std::unique_ptr<SceneRenderer> renderer_;

@@ -21,7 +21,7 @@ TEST(OverlayText, NamesTheInterfaceModesAndSaysWhenAModeIsUnknown) {
   EXPECT_STREQ(switch_status_name(SwitchStatus::BanTransition), "ban transition");
 }
 
-TEST(OverlayText, ShowsStatusEstimateAndTruthRowByRow) {
+TEST(OverlayText, ShowsStatusEstimateAndTruthRowByRowThenTheRunAndTheKeyboardsCommand) {
   SimSnapshot snapshot;
   snapshot.time_s = 12.346;
   snapshot.status.mode = 11;
@@ -50,6 +50,11 @@ TEST(OverlayText, ShowsStatusEstimateAndTruthRowByRow) {
   const OverlayText without_run_state = status_overlay(snapshot, "");
   EXPECT_EQ(lines(without_run_state.titles), lines(text.titles) - 1);
   EXPECT_EQ(lines(without_run_state.values), lines(text.values) - 1);
+
+  const OverlayText with_keys = status_overlay(snapshot, "paused", "sent mode 12 (recovery stand) gait 0");
+  ASSERT_EQ(lines(with_keys.titles), lines(with_keys.values));
+  EXPECT_EQ(with_keys.titles, text.titles + "\nkeys");
+  EXPECT_EQ(with_keys.values, text.values + "\nsent mode 12 (recovery stand) gait 0");
 }
 
 }  // namespace
