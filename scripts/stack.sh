@@ -49,15 +49,19 @@ wait_ready() {
   return 1
 }
 
-# a robot's MC runs at real-time priority: so do both here where the system allows it (root or
-# CAP_SYS_NICE), so a loaded machine delays them less than the 20 ms link watch; said when it cannot
-realtime=()
-if chrt -r 10 true 2>/dev/null; then
-  realtime=(chrt -r 10)
-  echo "stack.sh: A and B at real-time priority (SCHED_RR 10)"
+# a robot's MC runs at real-time priority on a core of its own, and the robot's own MC on hardware
+# of its own: here A (the robot) and B each get a core and a real-time priority where the system
+# allows it (root or CAP_SYS_NICE, two cores), so a loaded machine delays neither past B's link
+# watch; said when it cannot
+robot_placement=()
+mc_placement=()
+if chrt -r 20 true 2>/dev/null && [[ $(nproc) -ge 2 ]]; then
+  robot_placement=(taskset -c 1 chrt -r 20)
+  mc_placement=(taskset -c 0 chrt -r 10)
+  echo "stack.sh: A on core 1 at SCHED_RR 20, B on core 0 at SCHED_RR 10"
 else
-  echo "stack.sh: no real-time priority here (needs root or CAP_SYS_NICE): A and B run at normal priority," \
-       "and a loaded machine may trip B's 20 ms link watch"
+  echo "stack.sh: no real-time priority or no second core here (needs root or CAP_SYS_NICE): A and B run at" \
+       "normal priority, and a loaded machine may trip B's link watch"
 fi
 
 a_pid=""
@@ -71,11 +75,11 @@ stop_both() {
 trap stop_both EXIT
 trap 'exit 130' INT TERM
 
-"${realtime[@]}" "$exe" sim --speed 1 --config "$root/config/stack/sim.yaml" > "$a_log" 2>&1 &
+"${robot_placement[@]}" "$exe" sim --speed 1 --config "$root/config/stack/sim.yaml" > "$a_log" 2>&1 &
 a_pid=$!
 wait_ready "$a_pid" "$a_log" "MC A (cerebellum sim)" 60
 # B activates A's motor mode before its ready line: the robot lies 2 s first
-"${realtime[@]}" "$exe" run --config "$root/config/stack/cyberdog2-motor-sdk.yaml" > "$b_log" 2>&1 &
+"${mc_placement[@]}" "$exe" run --config "$root/config/stack/cyberdog2-motor-sdk.yaml" > "$b_log" 2>&1 &
 b_pid=$!
 wait_ready "$b_pid" "$b_log" "MC B (cerebellum run)" 60
 echo "stack.sh: A (pid $a_pid, log $a_log) and B (pid $b_pid, log $b_log) ready"

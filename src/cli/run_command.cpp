@@ -3,12 +3,14 @@
 #include <cstdio>
 #include <exception>
 #include <memory>
+#include <optional>
 
 #include "cli/client_interfaces.hpp"
 #include "cli/run_options.hpp"
 #include "cli/served_endpoints.hpp"
 #include "cli/stop_signal.hpp"
 #include "io/lcm_motor_sdk_robot/lcm_motor_sdk_robot.hpp"
+#include "io/lcm_sim_control/sim_control_adapter.hpp"
 #include "loop/mc.hpp"
 #include "loop/mc_config.hpp"
 #include "observers/console_reporter.hpp"
@@ -51,6 +53,12 @@ int run_run_command(const std::vector<std::string>& args) {
     ConsoleReporter reporter(stdout);
     mc.loop().add_observer(reporter);
     ClientInterfaces interfaces(mc, nullptr, stderr);
+    // where a simulation listens for push and fault: answered with a refusal, so those tools say
+    // why instead of waiting for a simulation that is not there
+    std::optional<SimControlAdapter> sim_refusals;
+    if (config.highlevel.enabled) {
+      sim_refusals.emplace(nullptr, nullptr, nullptr, config.highlevel.odometry_url, stderr);
+    }
 
     std::printf("cerebellum run: activating the CyberDog2's motor mode on %s (all-zero frames, up to %g s)\n",
                 config.motor_sdk_robot.control_url.c_str(), config.motor_sdk_robot.activation_timeout_s);
@@ -73,6 +81,7 @@ int run_run_command(const std::vector<std::string>& args) {
     const RunStats stats = mc.loop().run({options.duration_s, kRealTime}, stop_signal.flag());
     reporter.finish();
     interfaces.finish(stdout);
+    if (sim_refusals) sim_refusals->finish(stdout);
     robot.finish(stdout);
     std::printf("cerebellum stopped: %.2f s robot time in %.2f s wall time, %llu ticks, %llu late substeps\n",
                 stats.robot_time_s, stats.wall_time_s, static_cast<unsigned long long>(stats.ticks),

@@ -32,6 +32,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     }
     config = options.config_path.empty() ? default_config() : load_config(options.config_path);
     if (options.seed) config.robot.noise.seed = *options.seed;
+    if (options.terrain) config.robot.terrain = *options.terrain;
     if (!options.faults_path.empty()) faults = load_fault_scenario(options.faults_path);
     if (config.robot_kind != RobotKind::Sim) {
       std::fprintf(stderr,
@@ -65,7 +66,7 @@ int run_sim_command(const std::vector<std::string>& args) {
     // the simulation's own control channel (pushes): on the odometry URL with sim_truth
     std::optional<SimControlAdapter> sim_control;
     if (config.sim_command.enabled)
-      sim_control.emplace(mc.simulation(), mc.faults(), &link_faults, config.highlevel.odometry_url, stderr);
+      sim_control.emplace(&mc.simulation(), mc.faults(), &link_faults, config.highlevel.odometry_url, stderr);
     SimTools tools(mc, options);
 
     char speed[32] = "max";

@@ -3,15 +3,18 @@
 backend) drives MC A (`cerebellum sim` serving the motor SDK). A high-level client on B stands the
 robot up (12) and walks it (11/3) at VX m/s; judged on A's sim_truth in A's robot time: the trunk
 stands at a standing height, the forward speed over the last seconds of the walk is within 15 % of
-the command, and the robot never falls. Then A is killed (the link cut): B reports the lost link
+the command, and the robot never falls. `cerebellum push` at B is refused with the reason (B drives a
+real robot). Then A is killed (the link cut): B reports the lost link
 and damps within 50 ms of its own time (its log).
 
-    PYTHONPATH=<generated python types> stack_walk.py VX   (inside scripts/stack.sh: STACK_A_PID, STACK_B_LOG)
+    PYTHONPATH=<generated python types> stack_walk.py CEREBELLUM VX
+    (inside scripts/stack.sh: STACK_A_PID, STACK_B_LOG)
 """
 import math
 import os
 import re
 import signal
+import subprocess
 import sys
 import time
 
@@ -25,6 +28,7 @@ import heartbeat_spin
 CMD_URL = "udpm://239.255.76.67:7671?ttl=0"       # B's high-level interface
 RESPONSE_URL = "udpm://239.255.76.67:7670?ttl=0"
 TRUTH_URL = "udpm://239.255.76.67:7680?ttl=0"     # A's sim_truth (config/stack/sim.yaml)
+B_ODOMETRY_URL = "udpm://239.255.76.67:7672?ttl=0"  # where a simulation would take push and fault
 STAND_HEIGHT_M = (0.22, 0.30)
 FALLEN_TILT_DEG = 35.0
 FALLEN_HEIGHT_M = 0.15
@@ -45,7 +49,7 @@ def fail(text):
 
 
 def main():
-    vx = float(sys.argv[1])
+    exe, vx = sys.argv[1], float(sys.argv[2])
     commands = lcm.LCM(CMD_URL)
     responses = lcm.LCM(RESPONSE_URL)
     truth = lcm.LCM(TRUTH_URL)
@@ -98,7 +102,16 @@ def main():
     if abs(speed - vx) > SPEED_TOLERANCE * vx:
         fail("the speed is not within %.0f %% of the command" % (SPEED_TOLERANCE * 100))
 
-    # the link cut: A dies at once, as a robot's MC or its network would
+    push = subprocess.run([exe, "push", "10", "0", "--url", B_ODOMETRY_URL, "--timeout", "10"],
+                          capture_output=True, text=True)
+    print("stack_walk: cerebellum push at B: exit %d, %s" % (push.returncode, push.stdout.strip()))
+    if push.returncode != 1 or "this MC drives a real robot" not in push.stdout:
+        fail("B did not refuse the push with its reason: " + push.stdout + push.stderr)
+
+    # the link cut: A dies at once, as a robot's MC or its network would; B's report is the first
+    # loss logged after it
+    with open(os.environ["STACK_B_LOG"]) as log:
+        lines_before_kill = sum(1 for _ in log)
     os.kill(int(os.environ["STACK_A_PID"]), signal.SIGKILL)
     pattern = re.compile(r"link lost at ([0-9.]+) s robot time: no spi_data or state_estimator for ([0-9.]+) ms")
     found = None
@@ -106,10 +119,11 @@ def main():
     while found is None and time.time() < end:
         spin(0.2, lambda: False)
         with open(os.environ["STACK_B_LOG"]) as log:
-            for line in log:
+            for line in list(log)[lines_before_kill:]:
                 match = pattern.search(line)
                 if match:
                     found = (float(match.group(1)), float(match.group(2)))
+                    break
     if found is None:
         fail("B did not report the lost link within 10 s of A's death")
     print("stack_walk: A killed; B lost the link at %.3f s of its robot time after %.1f ms without state "
@@ -117,11 +131,13 @@ def main():
     if found[1] > DAMP_WITHIN_MS:
         fail("B damped too late")
     # and the protection it took: its once-a-second line after the loss shows the damping
-    protected = re.compile(r"^t=\s*([0-9.]+) s .*PROTECTED \((damping|motors off), causes 0x01")
+    protected = re.compile(r"^t=\s*([0-9.]+) s .*PROTECTED \((damping|motors off), causes 0x([0-9a-f]+)")
     end = time.time() + 10.0
     while time.time() < end:
         with open(os.environ["STACK_B_LOG"]) as log:
-            shown = [float(m.group(1)) for m in map(protected.search, log) if m and float(m.group(1)) > found[0]]
+            # cause bit 0: a motor error (every motor reads disconnected while the link is lost)
+            shown = [float(m.group(1)) for m in map(protected.search, log)
+                     if m and float(m.group(1)) > found[0] and int(m.group(3), 16) & 0x01]
         if shown:
             print("stack_walk: B's report at %.2f s: protected for a motor that does not answer" % shown[0])
             print("stack_walk: ok")

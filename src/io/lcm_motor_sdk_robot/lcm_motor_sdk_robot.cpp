@@ -17,6 +17,10 @@ namespace {
 constexpr const char* kInterfaceName = "cyberdog2 motor sdk robot";
 // the vendor's client period: activation frames go out at this rate too
 constexpr double kClientPeriodS = 0.002;
+// the thread wakes at least every millisecond (handle_pending's wait): a longer gap between its
+// steps is a pause of its own (descheduled, the machine stalled), after which the link watch
+// starts again
+constexpr double kListeningPauseS = 0.005;
 // link events (lost, back) a flapping link can provoke: a few per second, the rest summed up
 constexpr int kLinkLinesPerSecond = 4;
 
@@ -76,7 +80,8 @@ SensorFrame LcmMotorSdkRobot::read() {
   while (const std::optional<Joints> joints = joints_.try_pop()) client_.take_joints(joints->state, joints->received_s);
   while (const std::optional<Imu> imu = imu_.try_pop()) client_.take_imu(imu->sample, imu->received_s);
   while (const std::optional<std::uint16_t> err_flag = err_flags_.try_pop()) client_.take_err_flag(*err_flag);
-  const SensorFrame frame = client_.frame(wall_seconds(), robot_time_s_);
+  const SensorFrame frame =
+      client_.frame(wall_seconds(), robot_time_s_, listening_since_s_.load(std::memory_order_acquire));
   statuses_.try_push(StatusAt{client_.status(), robot_time_s_});
   return frame;
 }
@@ -100,6 +105,9 @@ bool LcmMotorSdkRobot::activate(const std::atomic<bool>& stop) {
 }
 
 void LcmMotorSdkRobot::step() {
+  const double now_s = wall_seconds();
+  if (now_s - last_step_s_ > kListeningPauseS) listening_since_s_.store(now_s, std::memory_order_release);
+  last_step_s_ = now_s;
   handle_pending(*control_lcm_, 1);
   handle_pending(*estimator_lcm_, 0);
   while (const std::optional<motor_ctrl_lcmt> frame = frames_.try_pop()) {

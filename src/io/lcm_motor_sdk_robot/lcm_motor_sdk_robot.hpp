@@ -88,10 +88,13 @@ class LcmMotorSdkRobot final : public RobotBackend {
   SpscRing<motor_ctrl_lcmt, 32> frames_;
   SpscRing<StatusAt, 64> statuses_;
   MotorSdkRobotRejections rejected_;
+  // since when the thread has listened without a pause of its own (wall seconds)
+  std::atomic<double> listening_since_s_{0.0};
   // loop thread only
   MotorSdkClient client_;
   double robot_time_s_ = 0.0;
   // backend's thread only
+  double last_step_s_ = 0.0;
   StatusAt logged_;
   RateLimitedLog link_log_;
   std::uint64_t counts_logged_ = 0;

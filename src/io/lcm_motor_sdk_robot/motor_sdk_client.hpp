@@ -5,7 +5,8 @@
 // - a motor reporting an error: stop commanding at once (damping frames, latched until restart);
 // - the vendor's command ranges and position-jump steps applied before sending, counted;
 // - the link watch: no fresh spi_data or state_estimator for link_timeout_s -> every motor reads
-//   "disconnected" in the sensor frame, so the health monitor damps the legs.
+//   "disconnected" in the sensor frame, so the health monitor damps the legs (counted from when
+//   the receiver last resumed listening, if it paused).
 #pragma once
 
 #include <cstdint>
@@ -42,8 +43,11 @@ class MotorSdkClient {
   void take_imu(const ImuSample& imu, double received_s);
   void take_err_flag(std::uint16_t err_flag);
 
-  // the sensor frame at now_s on the link's clock, stamped robot_time_s
-  SensorFrame frame(double now_s, double robot_time_s);
+  // the sensor frame at now_s on the link's clock, stamped robot_time_s. listening_since_s: since
+  // when the receiving thread has been listening without a pause of its own; silence before it
+  // does not count, since a receiver that was not running cannot tell a silent robot (a process
+  // or a machine paused, as a loaded host does, is not a lost link)
+  SensorFrame frame(double now_s, double robot_time_s, double listening_since_s = 0.0);
   // the frame to send (SDK convention) for the MC's command
   JointCommand command(const JointCommand& mc_command);
 
@@ -57,6 +61,7 @@ class MotorSdkClient {
   bool have_imu_ = false;
   double joints_received_s_ = 0.0;
   double imu_received_s_ = 0.0;
+  double lost_at_s_ = 0.0;  // when the link was last lost (link's clock)
 };
 
 }  // namespace cerebellum

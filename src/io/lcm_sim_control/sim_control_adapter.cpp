@@ -19,7 +19,7 @@ constexpr std::size_t kPacketMaxBytes = 8 + 8 + 4 + kSimCommandTextMaxBytes + 1;
 
 }  // namespace
 
-SimControlAdapter::SimControlAdapter(Simulation& simulation, FaultInjectingBackend* faults, LinkFaultSet* links,
+SimControlAdapter::SimControlAdapter(Simulation* simulation, FaultInjectingBackend* faults, LinkFaultSet* links,
                                      const std::string& url, std::FILE* log)
     : simulation_(simulation),
       faults_(faults),
@@ -66,6 +66,9 @@ void SimControlAdapter::on_command(const lcm::ReceiveBuffer* buffer, const std::
     log_lines_.line(wall_seconds(), "refused: " + why);
     answer(message.request_id, false, why);
   };
+  if (simulation_ == nullptr) {
+    return refuse("this MC drives a real robot, not a simulation: push and fault act only on `cerebellum sim`");
+  }
   if (command.link) {
     if (links_ == nullptr) return refuse("this simulation has no client link faults");
     links_->of(command.link->link).apply(*command.link);
@@ -85,7 +88,7 @@ void SimControlAdapter::on_command(const lcm::ReceiveBuffer* buffer, const std::
     return;
   }
   if (!command.push) return refuse(command.error);
-  simulation_.request_force_pulse(*command.push);
+  simulation_->request_force_pulse(*command.push);
   counts_.taken.add();
   const std::string done = "taken: " + push_command_text(*command.push) + " (N, N, N, s) on the trunk";
   log_lines_.line(wall_seconds(), done);

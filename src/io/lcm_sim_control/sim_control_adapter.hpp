@@ -36,9 +36,11 @@ struct SimControlCounters {
 
 class SimControlAdapter {
  public:
+  // simulation: nullptr on a real robot, where every command is refused with the reason (so
+  // `cerebellum push` and `fault` say why instead of waiting for an answer that never comes);
   // faults: the robot's fault injector, links: the client links' faults, or nullptr (such fault
   // commands are then refused); throws std::runtime_error naming a url LCM cannot open
-  SimControlAdapter(Simulation& simulation, FaultInjectingBackend* faults, LinkFaultSet* links, const std::string& url,
+  SimControlAdapter(Simulation* simulation, FaultInjectingBackend* faults, LinkFaultSet* links, const std::string& url,
                     std::FILE* log);
   ~SimControlAdapter();
   SimControlAdapter(const SimControlAdapter&) = delete;
@@ -53,7 +55,7 @@ class SimControlAdapter {
   void on_command(const lcm::ReceiveBuffer* buffer, const std::string& channel);
   void answer(std::int64_t request_id, bool taken, const std::string& reason);
 
-  Simulation& simulation_;
+  Simulation* simulation_;
   FaultInjectingBackend* faults_;
   LinkFaultSet* links_;
   std::FILE* log_;

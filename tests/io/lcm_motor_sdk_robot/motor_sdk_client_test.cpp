@@ -116,6 +116,17 @@ TEST(MotorSdkClient, ReportsEveryMotorDisconnectedWhenNoStateCameFor20Ms) {
   EXPECT_EQ(client.frame(1.033, 5.008).motor_faults[0], kMotorOk) << "fresh state: the link is back";
 }
 
+TEST(MotorSdkClient, ASilenceWhileTheReceiverItselfWasPausedIsNotALostLink) {
+  MotorSdkClient client = heard_client(1.000);
+  // the receiving thread paused (descheduled, the machine stalled) and listens again since 1.025 s
+  EXPECT_EQ(client.frame(1.030, 5.0, 1.025).motor_faults[0], kMotorOk) << "5 ms of listening, not 30 ms";
+  EXPECT_FALSE(client.status().link_lost);
+  EXPECT_TRUE(client.frame(1.046, 5.002, 1.025).motor_faults[0] & kMotorDisconnected)
+      << "21 ms of listening without a word: lost";
+  EXPECT_TRUE(client.frame(1.050, 5.004, 1.048).motor_faults[0] & kMotorDisconnected)
+      << "once lost, a pause of the receiver does not bring the link back: only a fresh message does";
+}
+
 TEST(MotorSdkClient, ARobotNeverHeardIsALostLink) {
   MotorSdkClient client{MotorSdkRobotConfig{}};
   EXPECT_TRUE(client.frame(0.0, 0.0).motor_faults[0] & kMotorDisconnected);

@@ -35,7 +35,7 @@ class SimControlLockstep : public ::testing::Test {
   SimControlLockstep()
       : mc_(make_simulated_mc(config_)),
         log_(std::tmpfile()),
-        adapter_(mc_.simulation(), mc_.faults(), &links_, config_.highlevel.odometry_url, log_),
+        adapter_(&mc_.simulation(), mc_.faults(), &links_, config_.highlevel.odometry_url, log_),
         peer_(config_.highlevel.odometry_url) {
     peer_.subscribe(kSimCommandResultChannel, &SimControlLockstep::on_result, this);
   }
@@ -139,6 +139,34 @@ TEST_F(SimControlLockstep, RefusalsAreAnsweredWithTheReasonAndMalformedPacketsOn
   EXPECT_EQ(adapter_.counters().taken, 0u);
   peer_.handleTimeout(50);
   EXPECT_EQ(results_.size(), 1u);  // only the well-formed command got an answer
+}
+
+TEST(SimControlOnARealRobot, EveryCommandIsRefusedWithTheReasonSoPushAndFaultDoNotWaitInVain) {
+  const std::string url = "udpm://239.255.76.67:7690?ttl=0";
+  std::FILE* log = std::tmpfile();
+  SimControlAdapter adapter(nullptr, nullptr, nullptr, url, log);
+  lcm::LCM peer(url);
+  std::optional<sim_command_result_lcmt> answer;
+  struct Handler {
+    std::optional<sim_command_result_lcmt>* answer;
+    void on_result(const lcm::ReceiveBuffer*, const std::string&, const sim_command_result_lcmt* result) {
+      *answer = *result;
+    }
+  } handler{&answer};
+  peer.subscribe(kSimCommandResultChannel, &Handler::on_result, &handler);
+  sim_command_lcmt command;
+  command.request_id = 3;
+  command.command = "push 0 40 0 0.1";
+  peer.publish(kSimCommandChannel, &command);
+  ASSERT_TRUE(eventually([&] {
+    peer.handleTimeout(5);
+    return answer.has_value();
+  }));
+  EXPECT_EQ(answer->result, 1);
+  EXPECT_NE(answer->reason.find("this MC drives a real robot"), std::string::npos) << answer->reason;
+  EXPECT_EQ(adapter.counters().refused, 1u);
+  adapter.finish(log);
+  std::fclose(log);
 }
 
 TEST_F(SimControlLockstep, AFaultCommandReachesTheRobotAndTheMcProtectsIt) {
