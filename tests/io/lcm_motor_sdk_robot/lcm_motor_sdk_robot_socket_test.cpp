@@ -16,6 +16,7 @@
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
 #include "io/lcm_motor_sdk/robot_state_messages.hpp"
 #include "io/lcm_motor_sdk_robot/lcm_motor_sdk_robot.hpp"
+#include "io/lcm_motor_sdk_robot/lying_joints.hpp"
 
 namespace cerebellum {
 namespace {
@@ -56,10 +57,7 @@ struct FakeRobot {
 
 RobotState lying_state() {
   RobotState state;
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    state.q[joint_index(leg, 1)] = 1.2;
-    state.q[joint_index(leg, 2)] = -2.4;
-  }
+  state.q = lying_joint_angles();
   return state;
 }
 
@@ -92,7 +90,7 @@ TEST(LcmMotorSdkRobot, ReadsTheRobotAndSendsAllZeroFramesUntilItClearsBit1ThenTh
     robot.write(command);
     return frame.motor_faults[0] == kMotorOk && fake.received.has_value();
   }));
-  EXPECT_NEAR(frame.q[1], 1.2, 1e-6) << "the hip in the SDK convention (negated on the wire)";
+  EXPECT_NEAR(frame.q[1], robot::kLyingPose[1], 1e-6) << "the hip in the SDK convention (negated on the wire)";
   EXPECT_EQ(fake.received->kp_des[0], 0.0f) << "err_flag bit 1: all-zero frames activate the robot";
 
   ASSERT_TRUE(eventually([&] {
@@ -101,7 +99,7 @@ TEST(LcmMotorSdkRobot, ReadsTheRobotAndSendsAllZeroFramesUntilItClearsBit1ThenTh
     robot.write(command);
     return fake.received && fake.received->kp_des[0] == 60.0f;
   }));
-  EXPECT_FLOAT_EQ(fake.received->q_des[1], -1.2f) << "sent in the wire convention";
+  EXPECT_FLOAT_EQ(fake.received->q_des[1], static_cast<float>(-robot::kLyingPose[1])) << "sent in the wire convention";
   EXPECT_FLOAT_EQ(fake.received->kd_des[1], 2.0f);
 }
 

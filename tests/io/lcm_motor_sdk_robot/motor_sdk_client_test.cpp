@@ -8,6 +8,7 @@
 #include <cmath>
 
 #include "core/robot_model.hpp"
+#include "io/lcm_motor_sdk_robot/lying_joints.hpp"
 
 namespace cerebellum {
 namespace {
@@ -15,10 +16,7 @@ namespace {
 // a healthy robot lying still, as its spi_data reads
 SpiJointState lying_joints() {
   SpiJointState joints;
-  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    joints.q[joint_index(leg, 1)] = 1.2;
-    joints.q[joint_index(leg, 2)] = -2.4;
-  }
+  joints.q = lying_joint_angles();
   return joints;
 }
 
@@ -141,7 +139,7 @@ TEST(MotorSdkClient, ReadsTheWireInTheSdkConventionAndTheImuFromStateEstimator) 
   state.temperature_c[0] = 41.3;
   state.motor_faults[7] = kMotorOverTemperature;
   const spi_data_t wire = make_spi_data(state);
-  EXPECT_FLOAT_EQ(wire.q_hip[0], -1.2f) << "hip and knee negated on the wire";
+  EXPECT_FLOAT_EQ(wire.q_hip[0], static_cast<float>(-robot::kLyingPose[1])) << "hip and knee negated on the wire";
   const SpiJointState read = joint_state_from_spi_data(wire);
   for (std::size_t i = 0; i < kNumJoints; ++i) EXPECT_NEAR(read.q[i], state.q[i], 1e-6) << i;
   EXPECT_NEAR(read.qd[1], 0.5, 1e-6);
