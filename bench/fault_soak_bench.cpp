@@ -16,73 +16,15 @@
 
 #include "loop/lockstep_client.hpp"
 #include "loop/simulated_robot.hpp"
+#include "safety/command_finite.hpp"
 #include "soak_support.hpp"
+#include "sweep/run_watch.hpp"
 
 namespace {
 
 using namespace cerebellum;
 
 using bench::upright;
-
-bool finite(const JointCommand& c) {
-  for (std::size_t i = 0; i < kNumJoints; ++i) {
-    if (!std::isfinite(c.q_des[i]) || !std::isfinite(c.qd_des[i]) || !std::isfinite(c.kp[i]) ||
-        !std::isfinite(c.kd[i]) || !std::isfinite(c.tau_ff[i])) {
-      return false;
-    }
-  }
-  return true;
-}
-
-bool damped_or_off(const JointCommand& c) {
-  return std::all_of(c.kp.begin(), c.kp.end(), [](double kp) { return kp == 0.0; }) &&
-         std::all_of(c.tau_ff.begin(), c.tau_ff.end(), [](double tau) { return tau == 0.0; });
-}
-
-// a random fault in the grammar of backend/fault_request.hpp
-std::string random_fault(std::mt19937& rng) {
-  std::uniform_int_distribution<int> motor(0, 11), leg(0, 3), kind(0, 13);
-  std::uniform_real_distribution<double> unit(0.0, 1.0);
-  std::string m = "motor ";
-  m += std::to_string(motor(rng));
-  const auto number = [&](double lower, double upper) { return std::to_string(lower + (upper - lower) * unit(rng)); };
-  switch (kind(rng)) {
-    case 0: return m + " disconnected";
-    case 1: return m + " over_temperature";
-    case 2: return m + " driver_fault";
-    case 3: return m + " encoder_lost";
-    case 4: return m + " overload";
-    case 5: return m + " stuck";
-    case 6: return m + " derated " + number(0.3, 0.9);
-    case 7: return std::string("imu bias ") + number(-0.05, 0.05);
-    case 8: return "imu stuck";
-    case 9: return "imu dropout";
-    case 10: return "imu nan";
-    case 11: return std::string("battery sag ") + number(2.0, 8.0);
-    case 12: return std::string("battery soc ") + number(0.0, 3.0);
-    default: {
-      std::string foot = "foot ";
-      foot += std::to_string(leg(rng));
-      return foot + " slippery " + number(0.05, 0.25);
-    }
-  }
-}
-
-std::string kind_of(const std::string& fault) {
-  // "motor 3 derated 0.5" -> "motor derated"; "imu stuck" -> "imu stuck"; "foot 2 slippery .." -> "foot slippery"
-  std::vector<std::string> words;
-  std::string word;
-  for (char c : fault + " ") {
-    if (c == ' ') {
-      if (!word.empty()) words.push_back(word);
-      word.clear();
-    } else {
-      word += c;
-    }
-  }
-  if (words[0] == "motor" || words[0] == "foot") return words[0] + " " + words[2];
-  return words[0] + " " + words[1];
-}
 
 }  // namespace
 
@@ -110,7 +52,7 @@ int main(int argc, char** argv) {
   bool was_protecting = false;
   const auto each_tick = [&](const CycleRecord& record) {
     ++ticks;
-    if (!finite(record.command)) ++non_finite;
+    if (!command_is_finite(record.command)) ++non_finite;
     if (record.health.protecting() && !was_protecting) {
       ++protections;
       if (verbose) {
@@ -123,7 +65,7 @@ int main(int argc, char** argv) {
   const double end = mc.backend().time_s() + 60.0 * minutes;
   while (mc.backend().time_s() < end) {
     if (chance(rng) < 0.35) {
-      const std::string fault = random_fault(rng);
+      const std::string fault = cerebellum::random_fault(rng);
       const double length_s = fault_length(rng);
       std::string text = fault;
       text += " for ";
@@ -134,7 +76,7 @@ int main(int argc, char** argv) {
                      parsed.error.c_str());
         return 1;
       }
-      ++injected[kind_of(fault)];
+      ++injected[fault_kind_name(fault)];
       if (verbose) std::fprintf(stderr, "%.2f s: fault %s\n", mc.backend().time_s(), text.c_str());
       last_fault_end_s = std::max(last_fault_end_s, mc.backend().time_s() + length_s);
     }

@@ -18,17 +18,13 @@
 #include "loop/simulated_robot.hpp"
 #include "control/locomotion/gait.hpp"
 #include "control/locomotion/gait_table.hpp"
+#include "sweep/random_soak.hpp"
 
 namespace {
 
 using namespace cerebellum;
 
 constexpr double kSettleAfterPushS = 3.0;
-
-bool upright(const GroundTruth& g) {
-  const double up_z = 1 - 2 * (g.quat[1] * g.quat[1] + g.quat[2] * g.quat[2]);
-  return up_z > std::cos(0.6);
-}
 
 struct Behaviour {
   const char* name;

@@ -1,0 +1,157 @@
+// The scenario file's refusals name the file, the key and what is accepted; a good file reads
+// into the scenario and its axes.
+#include "sweep/scenario_file.hpp"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+namespace cerebellum {
+namespace {
+
+constexpr const char* kGood = R"(
+robot:
+  sensor_noise: true
+seed: 7
+duration_s: 8
+commands:
+  - {at_s: 0, mode: 12}
+  - {at_s: 3, mode: 11, gait: 3, vx_m_s: 0.2}
+pushes:
+  - {at_s: 5, impulse_n_s: 10, direction_deg: 90}
+faults:
+  - {at_s: 6, fault: motor 3 stuck, duration_s: 1}
+settle_speed_m_s: 0.3
+sweep:
+  push_impulse_n_s: [5, 10, 15]
+  seed: [1, 2]
+)";
+
+std::string refusal(const std::string& text) {
+  try {
+    parse_scenario(text, "s.yaml", "");
+  } catch (const ConfigError& e) {
+    return e.what();
+  }
+  return "<accepted>";
+}
+
+TEST(ScenarioFile, AGoodFileReadsIntoTheScenarioAndItsAxesInTheFilesOrder) {
+  const SweepSpec spec = parse_scenario(kGood, "s.yaml", "");
+  EXPECT_TRUE(spec.base.sensor_noise);
+  EXPECT_EQ(spec.base.seed, 7u);
+  EXPECT_DOUBLE_EQ(spec.base.duration_s, 8.0);
+  ASSERT_EQ(spec.base.commands.size(), 2u);
+  EXPECT_EQ(spec.base.commands[1].mode, 11);
+  EXPECT_EQ(spec.base.commands[1].gait, 3);
+  EXPECT_DOUBLE_EQ(spec.base.commands[1].vx_m_s, 0.2);
+  ASSERT_EQ(spec.base.pushes.size(), 1u);
+  EXPECT_DOUBLE_EQ(spec.base.pushes[0].direction_deg, 90.0);
+  EXPECT_DOUBLE_EQ(spec.base.pushes[0].length_s, 0.1);
+  ASSERT_EQ(spec.base.faults.size(), 1u);
+  EXPECT_DOUBLE_EQ(spec.base.faults[0].request.duration_s, 1.0);
+  ASSERT_EQ(spec.axes.size(), 2u);
+  EXPECT_EQ(spec.axes[0].name, "push_impulse_n_s");
+  EXPECT_EQ(spec.axes[1].name, "seed");
+  EXPECT_EQ(spec.axes[1].values, (std::vector<double>{1, 2}));
+}
+
+TEST(ScenarioFile, MalformedYamlIsRefusedNamingTheFile) {
+  EXPECT_NE(refusal("duration_s: [1, 2").find("scenario s.yaml: not valid YAML"), std::string::npos);
+}
+
+TEST(ScenarioFile, AnUnknownKeyIsRefusedWithTheAcceptedOnes) {
+  const std::string e = refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nduraton: 4\n");
+  EXPECT_NE(e.find("scenario s.yaml: <top>.duraton is not a known key (accepted: commands,"), std::string::npos) << e;
+}
+
+TEST(ScenarioFile, AnAxisWithNoValuesIsRefused) {
+  const std::string e = refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nsweep:\n  seed: []\n");
+  EXPECT_NE(e.find("sweep.seed has no values; give at least one"), std::string::npos) << e;
+}
+
+TEST(ScenarioFile, AnUnknownAxisIsRefusedWithTheAxesThatExist) {
+  const std::string e = refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nsweep:\n  friction: [1]\n");
+  EXPECT_NE(e.find("sweep.friction is not a known key (accepted: gait, push_at_s, push_direction_deg, "
+                   "push_impulse_n_s, seed)"),
+            std::string::npos)
+      << e;
+}
+
+TEST(ScenarioFile, APushAxisWithoutPushesIsRefused) {
+  const std::string e =
+      refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nsweep:\n  push_impulse_n_s: [5, 10]\n");
+  EXPECT_NE(e.find("sweep.push_impulse_n_s sets a field of every push, but the scenario has no pushes"),
+            std::string::npos)
+      << e;
+}
+
+TEST(ScenarioFile, AnAxisValueOutOfRangeNamesItsIndex) {
+  const std::string e = refusal(
+      "duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\npushes: [{at_s: 1, impulse_n_s: 5}]\n"
+      "sweep:\n  push_impulse_n_s: [5, -1]\n");
+  EXPECT_NE(e.find("sweep.push_impulse_n_s[1] must be in [0"), std::string::npos) << e;
+}
+
+TEST(ScenarioFile, AnUnknownModeIsRefusedWithTheModes) {
+  const std::string e = refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 13}]\n");
+  EXPECT_NE(e.find("commands[0].mode must be one of the modes 0, 3, 7"), std::string::npos) << e;
+}
+
+TEST(ScenarioFile, AWalkingCommandWithAGaitNotInTheTableIsRefused) {
+  const std::string e = refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 11, gait: 99}]\n");
+  EXPECT_NE(e.find("commands[0].gait is not a gait of the gait table"), std::string::npos) << e;
+}
+
+TEST(ScenarioFile, CommandsOutOfTimeOrderAreRefused) {
+  const std::string e = refusal("duration_s: 9\ncommands: [{at_s: 3, mode: 12}, {at_s: 1, mode: 7}]\n");
+  EXPECT_NE(e.find("commands[1].at_s is earlier than the command before it"), std::string::npos) << e;
+}
+
+TEST(ScenarioFile, ACommandAfterTheEndIsRefused) {
+  const std::string e = refusal("duration_s: 3\ncommands: [{at_s: 5, mode: 12}]\n");
+  EXPECT_NE(e.find("commands[0].at_s must be in [0, 3]"), std::string::npos) << e;
+}
+
+TEST(ScenarioFile, AFaultOutsideTheGrammarIsRefusedWithTheGrammarsReason) {
+  const std::string e = refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nfaults: [{at_s: 1, fault: motor 3 melted}]\n");
+  EXPECT_NE(e.find("faults[0].fault "), std::string::npos) << e;
+}
+
+TEST(ScenarioFile, NeitherScriptNorSoakIsRefused) {
+  EXPECT_NE(refusal("duration_s: 3\n").find("commands is missing: give a command script (commands:) or a soak (soak:)"),
+            std::string::npos);
+}
+
+TEST(ScenarioFile, AMissingDurationIsRefused) {
+  EXPECT_NE(refusal("commands: [{at_s: 0, mode: 12}]\n").find("duration_s is missing"), std::string::npos);
+}
+
+TEST(ScenarioFile, ATerrainIsRefusedUntilSweepsCanLoadOne) {
+  const std::string e = refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nterrain: stairs\n");
+  EXPECT_NE(e.find("scenario s.yaml: terrain is not supported yet"), std::string::npos) << e;
+}
+
+TEST(ScenarioFile, ASoakWithHoldsTheWrongWayRoundIsRefused) {
+  const std::string e = refusal("duration_s: 30\nsoak: {hold_min_s: 3, hold_max_s: 1}\n");
+  EXPECT_NE(e.find("soak.hold_max_s is below hold_min_s"), std::string::npos) << e;
+}
+
+TEST(ScenarioFile, ARelativeRobotConfigIsTakenRelativeToTheFile) {
+  const SweepSpec spec =
+      parse_scenario("robot: {config: ../config/a.yaml}\nduration_s: 3\ncommands: [{at_s: 0, mode: 12}]\n",
+                     "/x/sweeps/s.yaml", "/x/sweeps");
+  EXPECT_EQ(spec.base.config_path, "/x/config/a.yaml");
+}
+
+TEST(ScenarioFile, AFolderIsRefusedAsAFile) {
+  try {
+    load_scenario("/tmp");
+    FAIL() << "a folder was accepted";
+  } catch (const ConfigError& e) {
+    EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos);
+  }
+}
+
+}  // namespace
+}  // namespace cerebellum

@@ -1,0 +1,65 @@
+// The grid: every combination once, the last axis fastest, each cell's values applied to the
+// scenario; a hostile product saturates instead of overflowing.
+#include "sweep/sweep_grid.hpp"
+
+#include <gtest/gtest.h>
+
+#include <set>
+
+#include "sweep/scenario_file.hpp"
+
+namespace cerebellum {
+namespace {
+
+SweepSpec spec_of(const std::string& sweep) {
+  return parse_scenario(
+      "duration_s: 9\ncommands: [{at_s: 0, mode: 12}, {at_s: 3, mode: 11, gait: 3}]\n"
+      "pushes: [{at_s: 5, impulse_n_s: 1}, {at_s: 6, impulse_n_s: 2}]\nsweep:\n" +
+          sweep,
+      "s.yaml", "");
+}
+
+TEST(SweepGrid, WithoutAxesTheGridIsTheOneBaseScenario) {
+  const SweepSpec spec = parse_scenario("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\n", "s.yaml", "");
+  EXPECT_EQ(grid_size(spec), 1u);
+  EXPECT_TRUE(cell_values(spec, 0).empty());
+}
+
+TEST(SweepGrid, EveryCombinationAppearsOnceWithTheLastAxisFastest) {
+  const SweepSpec spec = spec_of("  seed: [1, 2]\n  push_direction_deg: [0, 90, 180]\n");
+  ASSERT_EQ(grid_size(spec), 6u);
+  EXPECT_EQ(cell_values(spec, 0), (std::vector<double>{1, 0}));
+  EXPECT_EQ(cell_values(spec, 1), (std::vector<double>{1, 90}));
+  EXPECT_EQ(cell_values(spec, 3), (std::vector<double>{2, 0}));
+  std::set<std::vector<double>> seen;
+  for (std::uint64_t k = 0; k < 6; ++k) seen.insert(cell_values(spec, k));
+  EXPECT_EQ(seen.size(), 6u);
+}
+
+TEST(SweepGrid, ACellsValuesAreAppliedToTheSeedEveryPushAndEveryWalkingCommand) {
+  const SweepSpec spec = spec_of("  seed: [4]\n  gait: [10]\n  push_impulse_n_s: [12]\n  push_at_s: [5.5]\n");
+  const Scenario s = cell_scenario(spec, 0);
+  EXPECT_EQ(s.seed, 4u);
+  EXPECT_EQ(s.commands[0].gait, 0);  // the stand-up is not a walking command
+  EXPECT_EQ(s.commands[1].gait, 10);
+  for (const ScenarioPush& p : s.pushes) {
+    EXPECT_DOUBLE_EQ(p.impulse_n_s, 12.0);
+    EXPECT_DOUBLE_EQ(p.at_s, 5.5);
+  }
+}
+
+TEST(SweepGrid, ACellOutsideTheGridIsRefused) {
+  const SweepSpec spec = spec_of("  seed: [1, 2]\n");
+  EXPECT_THROW(cell_values(spec, 2), std::out_of_range);
+}
+
+TEST(SweepGrid, AProductBeyondTheCapSaturatesInsteadOfOverflowing) {
+  SweepSpec spec = spec_of("  seed: [1]\n");
+  Axis huge;
+  huge.values.assign(1u << 20, 1.0);
+  spec.axes = {huge, huge, huge, huge};  // 2^80 combinations
+  EXPECT_EQ(grid_size(spec), kGridSizeCap);
+}
+
+}  // namespace
+}  // namespace cerebellum
