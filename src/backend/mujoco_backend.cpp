@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <stdexcept>
 
+#include "backend/terrain_model.hpp"
 #include "core/joint_layout.hpp"
 
 namespace cerebellum {
@@ -25,15 +26,15 @@ int sensor_address(const mjModel* model, const std::string& name, const std::str
 }  // namespace
 
 MujocoBackend::MujocoBackend(const MujocoBackendConfig& config)
-    : config_(config), battery_(config.battery), main_board_(config.main_board), rng_(config.noise.seed) {
+    : config_(config),
+      terrain_(terrain_geometry(config.terrain)),
+      battery_(config.battery),
+      main_board_(config.main_board),
+      rng_(config.noise.seed) {
   if (!std::filesystem::is_regular_file(config.model_path)) {
     throw std::runtime_error("model file not found: " + config.model_path);
   }
-  char error[1024] = {0};
-  model_ = mj_loadXML(config.model_path.c_str(), nullptr, error, sizeof(error));
-  if (model_ == nullptr) {
-    throw std::runtime_error("model " + config.model_path + " failed to load: " + error);
-  }
+  model_ = load_model_with_terrain(config.model_path, terrain_);
   data_ = mj_makeData(model_);
   // a constructor that throws runs no destructor: free the model here (LeakSanitizer found it)
   try {
@@ -178,6 +179,7 @@ GroundTruth MujocoBackend::ground_truth() const {
     truth.angular_velocity_body[k] = data_->qvel[3 + k];
   }
   for (int k = 0; k < 4; ++k) truth.quat[k] = data_->qpos[3 + k];
+  truth.ground_height_m = ground_height_m(terrain_, truth.position[0], truth.position[1]);
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     truth.q[i] = data_->qpos[qpos_address_[i]];
     truth.qd[i] = data_->qvel[dof_address_[i]];

@@ -15,6 +15,7 @@
 #include "backend/push_request.hpp"
 #include "backend/robot_backend.hpp"
 #include "backend/simulation.hpp"
+#include "backend/terrain.hpp"
 
 namespace cerebellum {
 
@@ -29,6 +30,7 @@ struct SensorNoise {
 
 struct MujocoBackendConfig {
   std::string model_path;
+  TerrainSpec terrain;  // the ground built around the model's floor at start (backend/terrain.hpp)
   std::string initial_keyframe = "lying";  // a <key> of the model
   double initial_height_m = 0.3;           // trunk height at start
   SensorNoise noise;
@@ -78,6 +80,7 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   void apply_disturbances();
 
   MujocoBackendConfig config_;
+  TerrainGeometry terrain_;
   // the constructor's lookups and start pose (throws on a model without them)
   void find_model_elements();
 

@@ -28,6 +28,8 @@ struct GroundTruth {
   JointArray<double> q{};
   JointArray<double> qd{};
   JointArray<double> tau{};
+  // the ground's top surface under the trunk's origin (the terrain's, 0 on flat ground)
+  double ground_height_m = 0.0;
 };
 
 class Simulation {

@@ -52,7 +52,7 @@ void check_tool_options(const SimOptions& options, const std::vector<std::string
 
 std::string sim_usage() {
   return "usage: cerebellum sim [--speed X|max] [--duration S] [--config FILE] [--seed N] [--faults FILE]\n"
-         "                      [--viewer [--viewer-screenshot FILE.png]]\n"
+         "                      [--terrain SPEC] [--viewer [--viewer-screenshot FILE.png]]\n"
          "                      [--record FILE.mp4 [--record-fps F] [--record-size WxH]]\n"
          "                      [--telemetry FILE.csv [--telemetry-rate HZ]]\n"
          "  --speed X     pace at X times real time (X > 0, default 1); 'max' runs lockstep at full speed\n"
@@ -61,8 +61,9 @@ std::string sim_usage() {
          "  --seed N      seed of the sensor noise (integer >= 0)\n"
          "  --faults FILE a fault scenario (YAML: faults at simulated times; docs/safety.md);\n"
          "                at run time: cerebellum fault --help\n"
-         "  --viewer      live 3D window (needs a display): space pause, S slow motion, F follow,\n"
-         "                ctrl+right drag push, Esc quit\n"
+         "  --terrain SPEC  the ground (docs/terrain.md): " + std::string(terrain_spec_forms()) + "\n"
+         "  --viewer      live 3D window (needs a display): P pause, M slow motion, C follow,\n"
+         "                ctrl+right drag push, Esc quit; the other keys drive the robot (docs/driving.md)\n"
          "  --viewer-screenshot FILE.png  save the viewer's last frame when the run ends\n"
          "  --record FILE.mp4  render the run headlessly into a video (ffmpeg); not with --viewer\n"
          "  --record-fps F     video frames per second of robot time (0 < F <= 240, default 30)\n"
@@ -107,6 +108,8 @@ SimOptions parse_sim_options(const std::vector<std::string>& args) {
       options.faults_path = value();
       if (options.faults_path.empty())
         throw std::invalid_argument("--faults: needs a scenario file such as faults.yaml");
+    } else if (arg == "--terrain") {
+      options.terrain = parse_terrain_spec(value());
     } else if (arg == "--viewer") {
       options.viewer = true;
     } else if (arg == "--viewer-screenshot") {

@@ -5,6 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "backend/terrain.hpp"
+
 namespace cerebellum {
 
 struct SimOptions {
@@ -13,6 +15,7 @@ struct SimOptions {
   std::string config_path;   // empty: built-in defaults
   std::optional<unsigned> seed;
   std::string faults_path;  // a fault scenario file (docs/safety.md); empty: none
+  std::optional<TerrainSpec> terrain;  // the ground (docs/terrain.md); over the configuration's
   bool help = false;
   // tools (docs/tools.md)
   bool viewer = false;

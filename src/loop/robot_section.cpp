@@ -2,6 +2,7 @@
 
 #include <filesystem>
 #include <set>
+#include <stdexcept>
 #include <utility>
 #include <vector>
 
@@ -15,9 +16,22 @@ namespace fs = std::filesystem;
 
 constexpr const char* kMotorSdkSection = "cyberdog2_motor_sdk";
 // the simulation's own keys: a real robot has no model to load nor a pose to start in
-const std::set<std::string> kSimulationKeys{"initial_pose", "initial_height_m", "sensor_noise", "seed"};
+const std::set<std::string> kSimulationKeys{"initial_pose", "initial_height_m", "sensor_noise", "seed", "terrain"};
 
-void read_simulation(const SectionReader& section, MujocoBackendConfig& robot) {
+void read_simulation(const SectionReader& section, const std::string& base_dir, MujocoBackendConfig& robot) {
+  if (section.has("terrain")) {
+    std::string terrain;
+    section.text("terrain", terrain);
+    try {
+      robot.terrain = parse_terrain_spec(terrain);
+    } catch (const std::invalid_argument& e) {
+      section.fail("robot.terrain", e.what());
+    }
+    // a terrain file is found beside the configuration, as the model is
+    if (robot.terrain.kind == TerrainKind::File && fs::path(robot.terrain.file).is_relative()) {
+      robot.terrain.file = (fs::path(base_dir) / robot.terrain.file).lexically_normal().string();
+    }
+  }
   section.text("initial_pose", robot.initial_keyframe, {"lying", "stand"});
   section.number("initial_height_m", robot.initial_height_m, 0.05, 2.0);
   section.flag("sensor_noise", robot.noise.enabled);
@@ -57,7 +71,7 @@ void read_robot_section(const YAML::Node& node, const std::string& path, const s
                         McConfig& config) {
   const SectionReader section(node, path, "robot",
                               {"kind", "model", "initial_pose", "initial_height_m", "sensor_noise", "seed",
-                               kMotorSdkSection});
+                               "terrain", kMotorSdkSection});
   std::string kind = robot_kind_name(config.robot_kind);
   section.text("kind", kind, {"sim", "cyberdog2_motor_sdk", "zsibot_shm"});
   if (kind == "zsibot_shm") {
@@ -77,7 +91,7 @@ void read_robot_section(const YAML::Node& node, const std::string& path, const s
       section.fail(std::string("robot.") + kMotorSdkSection,
                    "applies only to robot.kind cyberdog2_motor_sdk (robot.kind is sim)");
     }
-    read_simulation(section, config.robot);
+    read_simulation(section, base_dir, config.robot);
     return;
   }
   for (const std::string& key : kSimulationKeys) {

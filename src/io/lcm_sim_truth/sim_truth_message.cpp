@@ -13,6 +13,7 @@ sim_truth_lcmt make_sim_truth_message(const GroundTruth& truth, double time_s) {
     message.angular_velocity[k] = truth.angular_velocity_body[k];
   }
   for (int k = 0; k < 4; ++k) message.quaternion[k] = truth.quat[k];
+  message.ground_height = truth.ground_height_m;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) message.foot_contact[leg] = truth.foot_contact[leg];
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     message.q[i] = truth.q[i];
