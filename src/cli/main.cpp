@@ -11,6 +11,7 @@
 #include "cli/push_command.hpp"
 #include "cli/run_command.hpp"
 #include "cli/sim_command.hpp"
+#include "cli/sweep_command.hpp"
 
 namespace {
 
@@ -26,7 +27,8 @@ constexpr const char* kUsage =
     "  replay play a recorded log back on its ports (cerebellum replay --help)\n"
     "  push   push the simulated robot's trunk with a force (cerebellum push --help)\n"
     "  fault  inject or clear a fault in the simulated robot (cerebellum fault --help)\n"
-    "  gait   convert and upload self-defined gait files (cerebellum gait --help)\n";
+    "  gait   convert and upload self-defined gait files (cerebellum gait --help)\n"
+    "  sweep  run a scenario file's grid of lockstep runs, locally or on Slurm (cerebellum sweep --help)\n";
 
 }  // namespace
 
@@ -47,9 +49,10 @@ int main(int argc, char** argv) {
   if (args[0] == "push") return cerebellum::run_push_command(rest);
   if (args[0] == "fault") return cerebellum::run_fault_command(rest);
   if (args[0] == "gait") return cerebellum::run_gait_command(rest);
+  if (args[0] == "sweep") return cerebellum::run_sweep_command(rest);
   std::fprintf(
       stderr,
-      "cerebellum: unknown command '%s' (accepted: sim, run, cmd, drive, status, log, replay, push, fault, gait)\n%s",
+      "cerebellum: unknown command '%s' (accepted: sim, run, cmd, drive, status, log, replay, push, fault, gait, sweep)\n%s",
       args[0].c_str(), kUsage);
   return 2;
 }

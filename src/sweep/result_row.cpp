@@ -16,18 +16,19 @@ std::string decimal(double v, int places) {
   return buffer;
 }
 
-// an axis's value as the file would write it
+}  // namespace
+
 std::string axis_value(double v) {
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.10g", v);
   return buffer;
 }
 
-}  // namespace
-
 std::string result_header(const SweepSpec& spec) {
   std::string h = "cell";
-  for (const Axis& axis : spec.axes) h += "," + axis.name;
+  // a seed axis is the seed column itself
+  for (const Axis& axis : spec.axes)
+    if (axis.kind != AxisKind::Seed) h += "," + axis.name;
   return h +
          ",seed,outcome,robot_time_s,ticks,commands,faults,pushes,falls,first_fall_s,falls_no_fault_near,"
          "falls_not_safe,protections,non_finite_commands,max_tilt_deg,end_speed_m_s,end_mode,distance_m";
@@ -35,7 +36,9 @@ std::string result_header(const SweepSpec& spec) {
 
 std::string result_row(const SweepSpec& spec, std::uint64_t cell, const RunResult& r) {
   std::string row = std::to_string(cell);
-  for (double v : cell_values(spec, cell)) row += "," + axis_value(v);
+  const std::vector<double> values = cell_values(spec, cell);
+  for (std::size_t a = 0; a < values.size(); ++a)
+    if (spec.axes[a].kind != AxisKind::Seed) row += "," + axis_value(values[a]);
   const Scenario s = cell_scenario(spec, cell);
   row += "," + std::to_string(s.seed) + "," + r.outcome + "," + decimal(r.robot_time_s, 3) + "," +
          std::to_string(r.ticks) + "," + std::to_string(r.commands) + "," + std::to_string(r.faults) + "," +

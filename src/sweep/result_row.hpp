@@ -11,7 +11,10 @@
 
 namespace cerebellum {
 
-// "cell,<axis>,...,seed,outcome,robot_time_s,..."
+// an axis's value as the file would write it
+std::string axis_value(double v);
+
+// "cell,<axis>,...,seed,outcome,robot_time_s,..." (a seed axis is the seed column)
 std::string result_header(const SweepSpec& spec);
 std::string result_row(const SweepSpec& spec, std::uint64_t cell, const RunResult& result);
 

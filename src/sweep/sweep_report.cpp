@@ -106,7 +106,7 @@ SweepTally gather_sweep(const SweepSpec& spec, const SweepFolder& folder) {
       std::string values;
       const std::vector<double> v = cell_values(spec, cell);
       for (std::size_t a = 0; a < v.size(); ++a)
-        values += (values.empty() ? "" : ", ") + spec.axes[a].name + " " + csv_fields(row)[1 + a];
+        values += (values.empty() ? "" : ", ") + spec.axes[a].name + " " + axis_value(v[a]);
       failures += "| " + std::to_string(cell) + " | " + values + " | " + outcome + (note.empty() ? "" : " (" + note + ")") +
                   " | " + folder.log_path(cell) + " | `" + replay_command(folder, cell) + "` |\n";
     }
@@ -121,13 +121,11 @@ SweepTally gather_sweep(const SweepSpec& spec, const SweepFolder& folder) {
     all.by_outcome[outcome] = count;
     all.runs += count;
   }
-  md += outcome_header("runs") + "| all |" + counts_cells(all) + "\n";
+  md += outcome_header("") + "| all |" + counts_cells(all) + "\n\n";
   for (std::size_t a = 0; a < spec.axes.size(); ++a) {
     md += outcome_header(spec.axes[a].name);
     for (std::size_t i = 0; i < spec.axes[a].values.size(); ++i) {
-      char value[64];
-      std::snprintf(value, sizeof value, "%.10g", spec.axes[a].values[i]);
-      md += "| " + std::string(value) + " |" + counts_cells(by_value[a][i]) + "\n";
+      md += "| " + axis_value(spec.axes[a].values[i]) + " |" + counts_cells(by_value[a][i]) + "\n";
     }
     md += "\n";
   }
