@@ -49,16 +49,16 @@ wait_ready() {
   return 1
 }
 
-# a robot's MC runs at real-time priority on a core of its own, and the robot's own MC on hardware
-# of its own: here A (the robot) and B each get a core and a real-time priority where the system
-# allows it (root or CAP_SYS_NICE, two cores), so a loaded machine delays neither past B's link
-# watch; said when it cannot
+# a robot's own MC runs on hardware of its own, and an MC on a robot at real-time priority: here A
+# (the robot) gets core 1 and SCHED_RR 20, B SCHED_RR 10 on either core (its link thread and its
+# MPC worker must not wait for each other on one core), where the system allows it (root or
+# CAP_SYS_NICE, two cores), so a loaded machine delays neither past B's link watch; said when not
 robot_placement=()
 mc_placement=()
 if chrt -r 20 true 2>/dev/null && [[ $(nproc) -ge 2 ]]; then
   robot_placement=(taskset -c 1 chrt -r 20)
-  mc_placement=(taskset -c 0 chrt -r 10)
-  echo "stack.sh: A on core 1 at SCHED_RR 20, B on core 0 at SCHED_RR 10"
+  mc_placement=(chrt -r 10)
+  echo "stack.sh: A on core 1 at SCHED_RR 20, B at SCHED_RR 10"
 else
   echo "stack.sh: no real-time priority or no second core here (needs root or CAP_SYS_NICE): A and B run at" \
        "normal priority, and a loaded machine may trip B's link watch"
