@@ -10,6 +10,7 @@ packages=(
   libsdl2-dev
   libglfw3-dev libegl-dev libegl-mesa0 libgl1-mesa-dri ffmpeg xvfb xauth xdotool
   clang libclang-rt-14-dev
+  slurm-wlm munge  # cerebellum sweep --slurm and its single-node test (tests/cli/slurm_single_node.sh)
 )
 missing=()
 for p in "${packages[@]}"; do

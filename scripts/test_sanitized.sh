@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # The sanitized stage of CI: builds with clang + ASan + UBSan (scripts/build_sanitized.sh), runs
 # the tests that do not run programs against the clock (labels demo, sockets, process, tools,
-# install, realtime left out: they are real-time end-to-end runs the Release stage covers, and a
+# install, realtime, slurm left out: they are real-time end-to-end runs the Release stage covers (slurm:
+# the sweep through a single-node Slurm started by the test), and a
 # sanitized MC falls behind the clock under load (a client's heartbeats then look late); seeds:
 # long seeded sweeps of the simulation, and long: the longest lockstep runs (over half a minute of
 # simulation each, about a minute sanitized); the Release stage runs both, and the code paths they
@@ -11,7 +12,7 @@ set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
 fuzz_seconds=${1:-5}
 # the labels left out: their test programs are not compiled either (tests/CMakeLists.txt)
-left_out="demo;sockets;process;tools;install;seeds;long;realtime"
+left_out="demo;sockets;process;tools;install;seeds;long;realtime;slurm"
 "$root/scripts/install_deps.sh"
 CEREBELLUM_TEST_LABELS_LEFT_OUT="$left_out" "$root/scripts/build_sanitized.sh"
 cd "$root/build-sanitize"
