@@ -20,6 +20,7 @@
 #include <custom_interface.hpp>
 
 #include "core/robot_model.hpp"
+#include "io/common/eventually.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
 #include "state_estimator_lcmt.hpp"
@@ -30,17 +31,6 @@ namespace {
 namespace fs = std::filesystem;
 constexpr const char* kControlUrl = "udpm://239.255.76.67:7667?ttl=255";
 constexpr const char* kEstimatorUrl = "udpm://239.255.76.67:7669?ttl=255";
-
-// polls until done() or the timeout; the timeout only bounds a failing test
-template <typename Done>
-bool eventually(Done done, double timeout_s = 10.0) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
-  while (!done()) {
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(5));
-  }
-  return true;
-}
 
 std::vector<std::uint8_t> encoded_frame(const JointCommand& sdk_command) {
   const motor_ctrl_lcmt message = encode_motor_ctrl(sdk_command);

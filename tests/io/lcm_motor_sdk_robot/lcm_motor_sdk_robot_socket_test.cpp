@@ -14,23 +14,13 @@
 #include <vector>
 
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
+#include "io/common/eventually.hpp"
 #include "io/lcm_motor_sdk/robot_state_messages.hpp"
 #include "io/lcm_motor_sdk_robot/lcm_motor_sdk_robot.hpp"
 #include "io/lcm_motor_sdk_robot/lying_joints.hpp"
 
 namespace cerebellum {
 namespace {
-
-// polls until done() or the timeout; the timeout only bounds a failing test
-template <typename Done>
-bool eventually(Done done, double timeout_s = 10.0) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::duration<double>(timeout_s);
-  while (!done()) {
-    if (std::chrono::steady_clock::now() > deadline) return false;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  return true;
-}
 
 // the robot's side of the link: publishes its state, keeps the newest motor_ctrl it received
 struct FakeRobot {

@@ -13,22 +13,13 @@
 
 #include "loop/mc.hpp"
 #include "loop/simulated_robot.hpp"
+#include "io/common/eventually.hpp"
 #include "io/lcm_sim_control/sim_control_adapter.hpp"
 #include "sim_command_lcmt.hpp"
 #include "sim_command_result_lcmt.hpp"
 
 namespace cerebellum {
 namespace {
-
-template <typename Condition>
-bool eventually(Condition condition) {
-  const auto deadline = std::chrono::steady_clock::now() + std::chrono::seconds(5);
-  while (std::chrono::steady_clock::now() < deadline) {
-    if (condition()) return true;
-    std::this_thread::sleep_for(std::chrono::milliseconds(2));
-  }
-  return condition();
-}
 
 class SimControlLockstep : public ::testing::Test {
  protected:
