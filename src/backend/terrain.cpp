@@ -33,6 +33,9 @@ constexpr double kRoughFrom_m = -1.0;
 constexpr double kRoughTo_m = 23.0;
 constexpr double kRoughCell_m = 0.05;
 constexpr double kRoughLattice_m = 0.25;
+// a rough patch's lowest point stays this far above the floor plane: drawn at the same height
+// the two surfaces flicker through each other (the depth buffer cannot tell them apart)
+constexpr double kRoughLift_m = 0.005;
 // a rough patch from a spec rises over 1 m, so the robot starts on flat ground
 constexpr double kRoughRampFrom_m = 0.5;
 constexpr double kRoughRampTo_m = 1.5;
@@ -153,8 +156,10 @@ TerrainHeightField rough_field(double center_x, double center_y, double half_x, 
         const double x = center_x - half_x + x_local;
         weight = smoothstep(std::clamp((x - kRoughRampFrom_m) / (kRoughRampTo_m - kRoughRampFrom_m), 0.0, 1.0));
       }
-      // above the floor: the mean is the amplitude, the deviation from it at most the amplitude
-      field.heights_m[static_cast<std::size_t>(r) * field.cols + c] = weight * amplitude_m * (1.0 + noise);
+      // above the floor: the mean is the amplitude (plus the lift), the deviation from it at most
+      // the amplitude
+      field.heights_m[static_cast<std::size_t>(r) * field.cols + c] =
+          kRoughLift_m + weight * amplitude_m * (1.0 + noise);
     }
   }
   return field;

@@ -97,7 +97,8 @@ TEST(TerrainGeometry, RoughGroundIsSeededStartsFlatAndStaysWithinItsAmplitudeOfI
   ASSERT_EQ(a.fields.size(), 1u);
   EXPECT_EQ(a.fields[0].heights_m, b.fields[0].heights_m);
   EXPECT_NE(a.fields[0].heights_m, c.fields[0].heights_m);
-  EXPECT_DOUBLE_EQ(ground_height_m(a, 0.0, 0.0), 0.0) << "the robot starts on flat ground";
+  EXPECT_NEAR(ground_height_m(a, 0.0, 0.0), 0.005, 1e-12) << "the robot starts on flat ground, 5 mm above the floor";
+  EXPECT_NEAR(ground_height_m(a, 0.3, 1.0), 0.005, 1e-12);
   double lowest = 1.0;
   double highest = 0.0;
   for (double x = 2.0; x < 22.0; x += 0.013) {
@@ -107,8 +108,8 @@ TEST(TerrainGeometry, RoughGroundIsSeededStartsFlatAndStaysWithinItsAmplitudeOfI
       highest = std::max(highest, h);
     }
   }
-  EXPECT_GE(lowest, 0.0);
-  EXPECT_LE(highest, 0.06 + 1e-12);
+  EXPECT_GE(lowest, 0.005);
+  EXPECT_LE(highest, 0.005 + 0.06 + 1e-12);
   EXPECT_GT(highest - lowest, 0.03) << "rough, not flat";
 }
 

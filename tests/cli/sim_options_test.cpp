@@ -24,6 +24,16 @@ TEST(SimOptions, ParsesEveryOption) {
   EXPECT_FALSE(options.help);
 }
 
+TEST(SimOptions, TheTerrainOptionTakesASpecAndRefusesAWrongOneWithTheAcceptedForms) {
+  const SimOptions options = parse_sim_options({"--terrain", "stairs:0.1:0.28"});
+  ASSERT_TRUE(options.terrain.has_value());
+  EXPECT_EQ(options.terrain->kind, TerrainKind::Stairs);
+  EXPECT_FALSE(parse_sim_options({}).terrain.has_value());
+  const std::string error = parse_error({"--terrain", "stairs:0.1"});
+  EXPECT_NE(error.find("terrain 'stairs:0.1': 'stairs' takes 2 values"), std::string::npos) << error;
+  EXPECT_NE(error.find("accepted: flat, slope:DEG"), std::string::npos) << error;
+}
+
 TEST(SimOptions, MaxSpeedMeansUnpaced) {
   EXPECT_LE(parse_sim_options({"--speed", "max"}).speed, 0.0);
   EXPECT_DOUBLE_EQ(parse_sim_options({}).speed, 1.0);

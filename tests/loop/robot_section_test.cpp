@@ -83,6 +83,24 @@ TEST(RobotSection, SimulationKeysAreRefusedOnARealRobot) {
       << error;
 }
 
+TEST(RobotSection, TheTerrainIsReadFromItsSpecAndAFileIsFoundBesideTheConfiguration) {
+  EXPECT_EQ(default_config().robot.terrain.kind, TerrainKind::Flat);
+  const McConfig slope = load_config(write_file("robot: {terrain: 'slope:12'}\n"));
+  EXPECT_EQ(slope.robot.terrain.kind, TerrainKind::Slope);
+  EXPECT_DOUBLE_EQ(slope.robot.terrain.slope_deg, 12.0);
+  const std::string path = write_file("robot: {terrain: 'file:ground.yaml'}\n");
+  const McConfig file = load_config(path);
+  EXPECT_EQ(file.robot.terrain.file, path.substr(0, path.rfind('/')) + "/ground.yaml");
+}
+
+TEST(RobotSection, AWrongTerrainIsRefusedNamingTheKeyAndTheSpecsError) {
+  const std::string error = load_error("robot: {terrain: 'slope:50'}\n");
+  EXPECT_NE(error.find("robot.terrain"), std::string::npos) << error;
+  EXPECT_NE(error.find("the slope in degrees must be in (0, 35], got 50"), std::string::npos) << error;
+  const std::string real = load_error("robot: {kind: cyberdog2_motor_sdk, terrain: 'step:0.05'}\n");
+  EXPECT_NE(real.find("robot.terrain applies only to the simulated robot"), std::string::npos) << real;
+}
+
 TEST(RobotSection, TheMotorSdkLinkIsRefusedOnTheSimulation) {
   const std::string error = load_error("robot: {kind: sim, cyberdog2_motor_sdk: {link_timeout_s: 0.02}}\n");
   EXPECT_NE(error.find("robot.cyberdog2_motor_sdk applies only to robot.kind cyberdog2_motor_sdk"), std::string::npos)
