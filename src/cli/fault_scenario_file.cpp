@@ -4,6 +4,7 @@
 
 #include <filesystem>
 
+#include "loop/timed_fault_entry.hpp"
 #include "loop/yaml_section.hpp"
 #include "core/text_file.hpp"
 
@@ -35,21 +36,7 @@ std::vector<TimedFault> parse_fault_scenario(const std::string& text, const std:
     std::string entry_name = "faults[";
     entry_name += std::to_string(i);
     entry_name += ']';
-    const SectionReader entry(list[i], name, entry_name, {"at_s", "fault", "duration_s"}, kKind);
-    if (!entry.has("at_s")) entry.fail(entry_name, "needs at_s (simulated seconds from the start)");
-    if (!entry.has("fault")) entry.fail(entry_name, "needs fault (for example: motor 3 disconnected)");
-    TimedFault timed;
-    entry.number("at_s", timed.at_s, 0.0, kFaultScenarioMaxTimeS);
-    std::string words;
-    entry.text("fault", words);
-    FaultParse parsed = parse_fault(words);
-    if (!parsed.request) entry.fail(entry_name + ".fault", parsed.error);
-    timed.request = *parsed.request;
-    if (entry.has("duration_s")) {
-      if (timed.request.kind == FaultKind::Clear) entry.fail(entry_name + ".duration_s", "is not taken by a clear");
-      entry.number("duration_s", timed.request.duration_s, 1e-3, kFaultScenarioMaxTimeS);
-    }
-    scenario.push_back(timed);
+    scenario.push_back(read_timed_fault(list[i], name, entry_name, kKind, kFaultScenarioMaxTimeS, kFaultScenarioMaxTimeS));
   }
   return scenario;
 }

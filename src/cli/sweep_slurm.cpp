@@ -1,7 +1,5 @@
 #include "cli/sweep_slurm.hpp"
 
-#include <fcntl.h>
-#include <spawn.h>
 #include <sys/stat.h>
 #include <sys/wait.h>
 #include <unistd.h>
@@ -17,11 +15,10 @@
 #include <stdexcept>
 #include <thread>
 
+#include "cli/child_process.hpp"
 #include "cli/progress_bar.hpp"
 #include "cli/sweep_workers.hpp"
 #include "core/text_file.hpp"
-
-extern char** environ;
 
 namespace cerebellum {
 
@@ -49,28 +46,11 @@ std::string path_words() {
   return path ? path : "<unset>";
 }
 
-// starts argv with its stdout and stderr into files
-pid_t spawn(std::vector<std::string> words, const std::string& out_path, const std::string& err_path) {
-  std::vector<char*> argv;
-  for (std::string& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, out_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_addopen(&actions, STDERR_FILENO, err_path.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  pid_t pid = 0;
-  const int error = ::posix_spawn(&pid, argv[0], &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (error != 0) throw std::runtime_error("cannot start " + words[0] + ": " + std::strerror(error));
-  return pid;
-}
-
 int wait_for(pid_t pid) {
   int status = 0;
   while (::waitpid(pid, &status, 0) < 0 && errno == EINTR) {
   }
-  return WIFEXITED(status) ? WEXITSTATUS(status) : 128 + WTERMSIG(status);
+  return exit_code(status);
 }
 
 std::string small_file(const std::string& path) {
@@ -85,7 +65,7 @@ std::string controller_answer(const std::string& sbatch, const std::string& slur
   const std::string scontrol = (fs::path(sbatch).parent_path() / "scontrol").string();
   if (::access(scontrol.c_str(), X_OK) != 0) return "no scontrol beside " + sbatch + " to ask the controller";
   const std::string out = slurm_dir + "/scontrol-ping.out";
-  const int status = wait_for(spawn({scontrol, "ping"}, out, out));
+  const int status = wait_for(spawn_with_output({scontrol, "ping"}, out));
   return scontrol + " ping (exit " + std::to_string(status) + "): " + small_file(out);
 }
 
@@ -135,7 +115,7 @@ void submit_slurm_sweep(const SweepOptions& o, const SweepFolder& folder, std::u
   if (slurm.wait) words.push_back("--wait");
   words.push_back(script);
   const std::string out = slurm_dir + "/sbatch.out", err = slurm_dir + "/sbatch.err";
-  const pid_t pid = spawn(words, out, err);
+  const pid_t pid = spawn_with_output(words, out, err);
 
   // sbatch prints the job's id once the controller took it; --wait then holds until the array ends
   ProgressBar bar(stdout, "slurm");
@@ -147,7 +127,7 @@ void submit_slurm_sweep(const SweepOptions& o, const SweepFolder& folder, std::u
     const pid_t ended = ::waitpid(pid, &raw, WNOHANG);
     if (job.empty()) job = small_file(out);
     if (ended == pid) {
-      status = WIFEXITED(raw) ? WEXITSTATUS(raw) : 128 + WTERMSIG(raw);
+      status = exit_code(raw);
       break;
     }
     std::uint64_t finished = 0;

@@ -1,9 +1,8 @@
 #include "cli/sweep_workers.hpp"
 
-#include <fcntl.h>
-#include <spawn.h>
+#include "cli/child_process.hpp"
+
 #include <sys/wait.h>
-#include <unistd.h>
 
 #include <cerrno>
 #include <csignal>
@@ -11,8 +10,6 @@
 #include <filesystem>
 #include <map>
 #include <stdexcept>
-
-extern char** environ;
 
 namespace cerebellum {
 
@@ -26,27 +23,11 @@ std::string how_it_ended(int status) {
   return "exit status " + std::to_string(WEXITSTATUS(status)) + " without a result";
 }
 
+// the worker's output is its cell's log
 pid_t start_worker(const std::string& executable, const std::string& scenario_path, const SweepFolder& folder,
                    std::uint64_t cell) {
-  const std::string cell_text = std::to_string(cell);
-  std::vector<std::string> words{executable, "sweep", scenario_path, "--cell", cell_text, "--out", folder.dir()};
-  std::vector<char*> argv;
-  for (std::string& w : words) argv.push_back(w.data());
-  argv.push_back(nullptr);
-  posix_spawn_file_actions_t actions;
-  posix_spawn_file_actions_init(&actions);
-  // the worker's output is its cell's log; it reads nothing
-  posix_spawn_file_actions_addopen(&actions, STDIN_FILENO, "/dev/null", O_RDONLY, 0);
-  posix_spawn_file_actions_addopen(&actions, STDOUT_FILENO, folder.log_path(cell).c_str(),
-                                   O_WRONLY | O_CREAT | O_TRUNC, 0644);
-  posix_spawn_file_actions_adddup2(&actions, STDOUT_FILENO, STDERR_FILENO);
-  pid_t pid = 0;
-  const int error = ::posix_spawn(&pid, executable.c_str(), &actions, nullptr, argv.data(), environ);
-  posix_spawn_file_actions_destroy(&actions);
-  if (error != 0)
-    throw std::runtime_error("cannot start the worker " + executable + " for cell " + cell_text + ": " +
-                             std::strerror(error));
-  return pid;
+  return spawn_with_output({executable, "sweep", scenario_path, "--cell", std::to_string(cell), "--out", folder.dir()},
+                           folder.log_path(cell));
 }
 
 }  // namespace

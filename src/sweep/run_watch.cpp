@@ -31,6 +31,7 @@ void RunWatch::observe(const CycleRecord& record, const GroundTruth& truth, doub
   const bool up = tilt < kFallTiltRad;
   if (up_ && !up) {
     ++result_.falls;
+    fall_times_s_.push_back(now_s);
     if (result_.first_fall_s < 0) result_.first_fall_s = now_s;
     if (now_s > last_fault_end_s_ + kFallExplainedWithinS) ++result_.falls_no_fault_near;
     safe_deadline_s_ = now_s + kSafeAfterFallS;

@@ -2,6 +2,8 @@
 // made safe after), protections, non-finite commands, the largest tilt.
 #pragma once
 
+#include <vector>
+
 #include "backend/simulation.hpp"
 #include "cycle/cycle_record.hpp"
 #include "sweep/run_result.hpp"
@@ -25,6 +27,8 @@ class RunWatch {
   void observe(const CycleRecord& record, const GroundTruth& truth, double now_s);
   // a fall whose safety is still being watched
   bool awaiting_safety() const { return safe_deadline_s_ >= 0.0; }
+  // when the fall of that number (0 first) happened
+  double fall_s(int fall) const { return fall_times_s_.at(static_cast<std::size_t>(fall)); }
   // at the run's end: a fall still awaiting safety is judged not safe
   void finish();
 
@@ -34,6 +38,7 @@ class RunWatch {
   bool was_protecting_ = false;
   double last_fault_end_s_ = -1e9;
   double safe_deadline_s_ = -1.0;
+  std::vector<double> fall_times_s_;
 };
 
 }  // namespace cerebellum

@@ -9,6 +9,7 @@
 #include "control/locomotion/gait_table.hpp"
 #include "core/high_level_command.hpp"
 #include "core/text_file.hpp"
+#include "loop/timed_fault_entry.hpp"
 #include "loop/yaml_section.hpp"
 
 namespace cerebellum {
@@ -47,6 +48,13 @@ std::vector<double> number_list(const SectionReader& section, const YAML::Node& 
   return values;
 }
 
+// a list of entries, not empty, not larger than the limit
+void check_list(const SectionReader& top, const YAML::Node& list, const std::string& key, const std::string& what) {
+  if (!list.IsSequence() || list.size() == 0) top.fail(key, what);
+  if (list.size() > kScenarioMaxListEntries)
+    top.fail(key, "has " + std::to_string(list.size()) + " entries; at most " + std::to_string(kScenarioMaxListEntries));
+}
+
 bool known_mode(int mode) {
   return std::any_of(kAllModes.begin(), kAllModes.end(), [&](const ModeInfo& m) { return static_cast<int>(m.id) == mode; });
 }
@@ -67,9 +75,7 @@ void read_robot(const YAML::Node& node, const std::string& name, const std::stri
 
 std::vector<ScriptedCommand> read_commands(const SectionReader& top, const YAML::Node& list, const std::string& name,
                                            double duration_s) {
-  if (!list.IsSequence() || list.size() == 0)
-    top.fail("commands", "must be a list of commands with at_s, mode and optionally gait, vx_m_s, vy_m_s, yaw_rate_rad_s");
-  if (list.size() > kScenarioMaxListEntries) top.fail("commands", "has more than " + std::to_string(kScenarioMaxListEntries) + " entries");
+  check_list(top, list, "commands", "must be a list of commands with at_s, mode and optionally gait, vx_m_s, vy_m_s, yaw_rate_rad_s");
   std::vector<ScriptedCommand> commands;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string where = indexed("commands", i);
@@ -123,9 +129,7 @@ SoakSpec read_soak(const YAML::Node& node, const std::string& name) {
 
 std::vector<ScenarioPush> read_pushes(const SectionReader& top, const YAML::Node& list, const std::string& name,
                                       double duration_s) {
-  if (!list.IsSequence() || list.size() == 0)
-    top.fail("pushes", "must be a list of pushes with at_s, impulse_n_s and optionally direction_deg, length_s");
-  if (list.size() > kScenarioMaxListEntries) top.fail("pushes", "has more than " + std::to_string(kScenarioMaxListEntries) + " entries");
+  check_list(top, list, "pushes", "must be a list of pushes with at_s, impulse_n_s and optionally direction_deg, length_s");
   std::vector<ScenarioPush> pushes;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string where = indexed("pushes", i);
@@ -144,27 +148,11 @@ std::vector<ScenarioPush> read_pushes(const SectionReader& top, const YAML::Node
 
 std::vector<TimedFault> read_faults(const SectionReader& top, const YAML::Node& list, const std::string& name,
                                     double duration_s) {
-  if (!list.IsSequence() || list.size() == 0)
-    top.fail("faults", "must be a list of entries with at_s, fault and optionally duration_s");
-  if (list.size() > kScenarioMaxListEntries) top.fail("faults", "has more than " + std::to_string(kScenarioMaxListEntries) + " entries");
+  check_list(top, list, "faults", "must be a list of entries with at_s, fault and optionally duration_s");
   std::vector<TimedFault> faults;
   for (std::size_t i = 0; i < list.size(); ++i) {
     const std::string where = indexed("faults", i);
-    const SectionReader entry(list[i], name, where, {"at_s", "fault", "duration_s"}, kKind);
-    if (!entry.has("at_s")) entry.fail(where, "needs at_s (robot seconds from the start)");
-    if (!entry.has("fault")) entry.fail(where, "needs fault (for example: motor 3 disconnected)");
-    TimedFault timed;
-    entry.number("at_s", timed.at_s, 0.0, duration_s);
-    std::string words;
-    entry.text("fault", words);
-    const FaultParse parsed = parse_fault(words);
-    if (!parsed.request) entry.fail(where + ".fault", parsed.error);
-    timed.request = *parsed.request;
-    if (entry.has("duration_s")) {
-      if (timed.request.kind == FaultKind::Clear) entry.fail(where + ".duration_s", "is not taken by a clear");
-      entry.number("duration_s", timed.request.duration_s, 1e-3, kScenarioMaxDurationS);
-    }
-    faults.push_back(timed);
+    faults.push_back(read_timed_fault(list[i], name, where, kKind, duration_s, kScenarioMaxDurationS));
   }
   return faults;
 }
