@@ -6,6 +6,7 @@ packages=(
   liblcm-dev liblcm-bin libglib2.0-dev liblcm-java default-jdk-headless
   libmujoco-dev libeigen3-dev libtomlplusplus-dev libyaml-cpp-dev
   libgtest-dev libgmock-dev libbenchmark-dev libalglib-dev
+  coinor-libipopt-dev  # the flip planner (src/control/flip_plan, bench/plan_flip)
   iproute2 util-linux python3 python3-matplotlib python3-dev python3-setuptools python3-toml
   libsdl2-dev
   libglfw3-dev libegl-dev libegl-mesa0 libgl1-mesa-dri ffmpeg xvfb xauth xdotool

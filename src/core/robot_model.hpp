@@ -105,6 +105,12 @@ inline constexpr double kRotorMassKg = 0.0567;
 inline constexpr double kAbadRotorX = 0.0998;        // the abad rotors sit on the trunk: +-x, on the abad axis
 inline constexpr double kHipRotorOffsetM = 0.0758;   // along the abad link, from the abad joint
 inline constexpr double kKneeRotorOffsetM = 0.0342;  // along the thigh, from the hip joint
+// a rotor's inertia about its own axis and across it (the model file's rotor bodies)
+inline constexpr double kRotorAxialInertiaKgM2 = 4.78e-5;
+inline constexpr double kRotorCrossInertiaKgM2 = 2.53e-5;
+// the rotor's spin seen at the joint through the gear, 4.78e-5 x 7.75^2 rounded as the model
+// file's armature="0.00287" has it (the simulated joints carry this figure)
+inline constexpr double kJointArmatureKgM2 = 0.00287;
 
 // the trunk's height above the ground in the default stand (cyberdog2-highlevel.md: mode 3's
 // default height)
