@@ -1,6 +1,7 @@
 // The flip planner as a tool: plans the back flip of the planar model (src/control/flip_plan)
 // with IPOPT and writes it as a flip file (src/control/jump/flip_trajectory.hpp).
-//   plan_flip [--torque-max-nm X] [--turn-rad R] [--iterations N] [--out PATH]
+//   plan_flip [--torque-max-nm X] [--turn-rad R] [--iterations N] [--intervals A,B,C] [--out PATH]
+// (--intervals: the collocation intervals of the three phases, default 20,14,26)
 // --turn-rad 0 asks the largest back turn the limits allow instead of a full turn. Prints the
 // solver's status, the turn, the peak torques, the phases' durations and the model's residual.
 // Raising --torque-max-nm is an experiment (what limit would a flip need); the shipped file is
@@ -18,7 +19,7 @@ namespace {
 using namespace cerebellum;
 
 int usage() {
-  std::fprintf(stderr, "usage: plan_flip [--torque-max-nm X] [--turn-rad R] [--iterations N] [--out PATH]\n");
+  std::fprintf(stderr, "usage: plan_flip [--torque-max-nm X] [--turn-rad R] [--iterations N] [--intervals A,B,C] [--out PATH]\n");
   return 2;
 }
 
@@ -52,6 +53,9 @@ int main(int argc, char** argv) {
     const std::optional<double> number = finite_number(value);
     if (option == "--out") {
       out_path = value;
+    } else if (option == "--intervals") {
+      if (std::sscanf(value.c_str(), "%d,%d,%d", &request.intervals[0], &request.intervals[1], &request.intervals[2]) != 3)
+        return usage();
     } else if (!number) {
       return usage();
     } else if (option == "--torque-max-nm") {
