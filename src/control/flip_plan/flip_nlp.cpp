@@ -60,7 +60,9 @@ void knot_constraints(const std::vector<PlanarBody>& bodies, const FlipLimits& l
   dynamics_residual(bodies, z + kQ, z + kQd, z + kQdd, z + kTau, z + kForce, g);
   for (int pair = 0; pair < kPairs; ++pair) {
     const Point2<T> foot = foot_position(z + kQ, pair);
-    g[kFeetRow + 2 * pair] = foot.x;
+    // the foot is a ball: rolling without slipping, its centre moves by the radius times the
+    // shank's turn, so a stance foot keeps x - r * (shank angle), not x
+    g[kFeetRow + 2 * pair] = foot.x - robot::kFootRadius * segment_angle(z + kQ, 2, pair);
     g[kFeetRow + 2 * pair + 1] = foot.z;
     const T fx = z[kForce + 2 * pair];
     const T fz = z[kForce + 2 * pair + 1];
@@ -105,7 +107,8 @@ class FlipNlp : public Ipopt::TNLP {
     start_q_[kZ] = 0.0;
     const Point2<double> foot = foot_position(start_q_.data(), kFrontPair);
     start_q_[kZ] = robot::kFootRadius - foot.z;
-    for (int pair = 0; pair < kPairs; ++pair) stance_x_m_[pair] = foot_position(start_q_.data(), pair).x;
+    for (int pair = 0; pair < kPairs; ++pair)
+      stance_x_m_[pair] = foot_position(start_q_.data(), pair).x - robot::kFootRadius * segment_angle(start_q_.data(), 2, pair);
   }
 
   bool get_nlp_info(Index& n, Index& m, Index& nnz_jac_g, Index& nnz_h_lag, IndexStyleEnum& index_style) override {
@@ -136,7 +139,7 @@ class FlipNlp : public Ipopt::TNLP {
         lo[kQ + knee_coordinate(pair)] = knee.lower, hi[kQ + knee_coordinate(pair)] = knee.upper;
         // the ground pushes, never pulls; a foot in the air carries nothing
         if (in_stance(pair, phase)) {
-          lo[kForce + 2 * pair + 1] = 0.0;
+          lo[kForce + 2 * pair + 1] = lim.stance_force_min_n;
         } else {
           lo[kForce + 2 * pair] = hi[kForce + 2 * pair] = 0.0;
           lo[kForce + 2 * pair + 1] = hi[kForce + 2 * pair + 1] = 0.0;
