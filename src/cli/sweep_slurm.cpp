@@ -134,7 +134,8 @@ void submit_slurm_sweep(const SweepOptions& o, const SweepFolder& folder, std::u
     for (std::uint64_t cell = 0; cell < cells; ++cell) finished += folder.finished(cell);
     bar.update(finished, cells, std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count(),
                job.empty() ? "submitting" : "job " + job);
-    std::this_thread::sleep_for(std::chrono::milliseconds(500));
+    // each look stats every cell file, maybe on a shared file system: not too often
+    std::this_thread::sleep_for(std::chrono::seconds(2));
   }
   bar.finish();
   if (job.empty()) {
