@@ -6,6 +6,7 @@
 set -euo pipefail
 case_name=$1
 cerebellum=$(realpath "$2")
+root=$(cd "$(dirname "$0")/../.." && pwd)
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 cd "$work"
@@ -44,6 +45,11 @@ case "$case_name" in
     # one cell alone gives the sweep's row
     "$cerebellum" sweep stand.yaml --cell 1 > alone.txt 2>&1 || fail "the replay failed: $(cat alone.txt)"
     [[ "$(sed -n 2p alone.txt)" == "$(sed -n 3p out/results.csv)" ]] || fail "the replay's row differs: $(cat alone.txt)"
+    # the plots of the results
+    /usr/bin/python3 "$root/scripts/plot_sweep.py" out > plot.txt 2>&1 || fail "plot_sweep failed: $(cat plot.txt)"
+    for png in outcomes_by_seed falls max_tilt; do
+      [[ -s out/plots/$png.png ]] || fail "no $png.png: $(cat plot.txt)"
+    done
     echo "PASS"
     ;;
   a_crashed_worker_marks_its_cell_and_the_sweep_goes_on)
