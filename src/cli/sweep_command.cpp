@@ -8,6 +8,7 @@
 #include <chrono>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 #include <stdexcept>
 #include <thread>
 
@@ -16,6 +17,7 @@
 #include "cli/sweep_slurm.hpp"
 #include "cli/sweep_workers.hpp"
 #include "core/text_file.hpp"
+#include "observers/record_video.hpp"
 #include "sweep/result_row.hpp"
 #include "sweep/scenario_file.hpp"
 #include "sweep/scenario_run.hpp"
@@ -42,6 +44,29 @@ std::string grid_shape(const SweepSpec& spec) {
   return shape.empty() ? "no axes" : shape;
 }
 
+// a replay's video: the recorder on the MC's cycles, every frame rendered (lockstep), the file
+// closed before the MC goes; nothing without a path
+RunAttachments video_attachments(const std::string& path) {
+  if (path.empty()) return {};
+  auto recorder = std::make_shared<std::unique_ptr<VideoRecorder>>();
+  RunAttachments attachments;
+  attachments.started = [recorder, path](Mc& mc) {
+    VideoOptions video;
+    video.path = path;
+    video.lockstep = true;
+    *recorder = std::make_unique<VideoRecorder>(mc.simulation(), video);
+    mc.loop().add_observer(**recorder);
+  };
+  attachments.ending = [recorder, path](Mc&) {
+    std::fprintf(stderr, "cerebellum sweep: rendering the rest of the video...\n");
+    const VideoResult video = (*recorder)->finish();
+    if (!video.ok) throw std::runtime_error("the video " + path + " was not written completely (see ffmpeg's message above)");
+    std::fprintf(stderr, "cerebellum sweep: video of %llu frames written to %s\n",
+                 static_cast<unsigned long long>(video.frames), path.c_str());
+  };
+  return attachments;
+}
+
 // one cell here, in this process: the worker's job and the replay of a failed run
 int run_one_cell(const SweepOptions& o, const SweepSpec& spec, const std::string& text) {
   const std::uint64_t size = grid_size(spec);
@@ -61,7 +86,7 @@ int run_one_cell(const SweepOptions& o, const SweepSpec& spec, const std::string
     if (folder->scenario_text() != text)
       throw std::runtime_error(o.file + " has changed since the sweep in " + o.out + " started");
   }
-  const RunResult result = run_scenario(cell_scenario(spec, *o.cell));
+  const RunResult result = run_scenario(cell_scenario(spec, *o.cell), video_attachments(o.record_path));
   const std::string header = result_header(spec), row = result_row(spec, *o.cell, result);
   std::printf("%s\n%s\n", header.c_str(), row.c_str());
   if (folder) folder->write_result(*o.cell, header, row);

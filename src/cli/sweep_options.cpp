@@ -23,7 +23,7 @@ std::uint64_t whole(const std::string& option, const std::string& text, double l
 
 std::string sweep_usage() {
   return "usage: cerebellum sweep FILE [-j N] [--out DIR] [--yes] [--slurm [--partition P] [--time T] [--tasks N]]\n"
-         "       cerebellum sweep FILE --cell K [--out DIR]\n"
+         "       cerebellum sweep FILE --cell K [--out DIR] [--record FILE.mp4]\n"
          "       cerebellum sweep --status DIR\n"
          "Runs every cell of the scenario file's grid (docs/sweeps.md), each a lockstep run of the\n"
          "simulated robot in its own worker process (no sockets), and writes DIR/results.csv (one row\n"
@@ -35,6 +35,7 @@ std::string sweep_usage() {
          std::to_string(kSweepConfirmAboveCells) +
          " cells\n"
          "  --cell K       run cell K alone and print its row (into DIR too with --out)\n"
+         "  --record F.mp4 with --cell: a video of the run (headless rendering and ffmpeg, as cerebellum sim)\n"
          "  --slice I/N    run only the cells K with K % N == I, without gathering (a Slurm task)\n"
          "  --slurm        submit the sweep to Slurm as a job array (sbatch) and wait for it; DIR must\n"
          "                 be on a folder every node sees\n"
@@ -69,6 +70,8 @@ SweepOptions parse_sweep_options(const std::vector<std::string>& args) {
       o.yes = true;
     } else if (a == "--cell") {
       o.cell = whole(a, value(i), 0, 1e15);
+    } else if (a == "--record") {
+      o.record_path = value(i);
     } else if (a == "--slice") {
       const std::string text = value(i);
       const auto slash = text.find('/');
@@ -112,6 +115,7 @@ SweepOptions parse_sweep_options(const std::vector<std::string>& args) {
   }
   if (o.file.empty()) throw std::invalid_argument("give the scenario file (cerebellum sweep --help)");
   if (o.cell && (o.slurm || o.slice)) throw std::invalid_argument("--cell runs one cell here; not with --slurm or --slice");
+  if (!o.record_path.empty() && !o.cell) throw std::invalid_argument("--record FILE.mp4 films one cell: give --cell K");
   if (o.slurm && o.slice) throw std::invalid_argument("--slice is what each Slurm task runs; not with --slurm");
   if (o.out.empty() && !o.cell) o.out = "sweep-" + std::filesystem::path(o.file).stem().string();
   return o;

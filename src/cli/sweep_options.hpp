@@ -27,6 +27,7 @@ struct SweepOptions {
   bool yes = false;
   bool help = false;
   std::optional<std::uint64_t> cell;  // run one cell alone (the worker, or a replay)
+  std::string record_path;            // with --cell: a video of the run
   // only cells with cell % count == index (a Slurm task's slice); no gathering
   std::optional<std::pair<std::uint64_t, std::uint64_t>> slice;
   std::string status_dir;  // --status DIR

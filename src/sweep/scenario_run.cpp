@@ -155,8 +155,9 @@ McConfig scenario_config(const Scenario& s) {
   return config;
 }
 
-RunResult run_scenario(const Scenario& s) {
+RunResult run_scenario(const Scenario& s, const RunAttachments& attachments) {
   Mc mc = make_simulated_mc(scenario_config(s), s.faults);
+  if (attachments.started) attachments.started(mc);
   RunResult result;
   RunWatch watch(result);
   for (const TimedFault& f : s.faults) {
@@ -181,6 +182,7 @@ RunResult run_scenario(const Scenario& s) {
   result.distance_m = std::hypot(end.position[0] - start.position[0], end.position[1] - start.position[1]);
   result.end_mode = mc.machine().status().mode;
   judge_run(s, result);
+  if (attachments.ending) attachments.ending(mc);
   return result;
 }
 

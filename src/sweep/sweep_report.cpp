@@ -131,7 +131,7 @@ SweepTally gather_sweep(const SweepSpec& spec, const SweepFolder& folder) {
   }
   if (!failures.empty()) {
     md += "## Runs that did not end ok\n\n| cell | values | outcome | log | replay alone |\n|---|---|---|---|---|\n" +
-          failures;
+          failures + "\nA replay with `--record FILE.mp4` also films the run.\n";
   }
   folder.write_file("summary.md", md);
   return tally;

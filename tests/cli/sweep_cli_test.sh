@@ -126,6 +126,18 @@ YAML
     grep -q 'nothing_here holds no sweep' out.txt || fail "$(cat out.txt)"
     echo "PASS"
     ;;
+  a_replay_records_a_video)
+    printf 'duration_s: 1\ncommands:\n  - {at_s: 0, mode: 12}\n' > short.yaml
+    "$cerebellum" sweep short.yaml --cell 0 --record run.mp4 > replay.txt 2>&1 || fail "the replay failed: $(cat replay.txt)"
+    grep -q '^0,1,ok,1.000,' replay.txt || fail "no row: $(cat replay.txt)"
+    grep -q 'video of 30 frames written to run.mp4' replay.txt || fail "no video: $(cat replay.txt)"
+    duration=$(ffprobe -v error -show_entries format=duration -of csv=p=0 run.mp4)
+    [[ "$duration" == 1.000000 ]] || fail "the video lasts $duration s, not the run's 1 s"
+    status=0
+    "$cerebellum" sweep short.yaml --record run.mp4 > no_cell.txt 2>&1 || status=$?
+    [[ $status -eq 2 ]] && grep -q -- '--record FILE.mp4 films one cell: give --cell K' no_cell.txt || fail "$(cat no_cell.txt)"
+    echo "PASS"
+    ;;
   *)
     fail "unknown case $case_name"
     ;;
