@@ -1,6 +1,6 @@
 // The flip planner as a tool: plans the back flip of the planar model (src/control/flip_plan)
 // with IPOPT and writes it as a flip file (src/control/jump/flip_trajectory.hpp).
-//   plan_flip [--torque-max-nm X] [--turn-rad R] [--iterations N] [--intervals A,B,C] [--out PATH]
+//   plan_flip [--torque-max-nm X] [--turn-rad R] [--iterations N] [--intervals A,B,C] [--stance-force-min-n F] [--out PATH]
 // (--intervals: the collocation intervals of the three phases, default 20,14,26)
 // --turn-rad 0 asks the largest back turn the limits allow instead of a full turn. Prints the
 // solver's status, the turn, the peak torques, the phases' durations and the model's residual.
@@ -19,7 +19,7 @@ namespace {
 using namespace cerebellum;
 
 int usage() {
-  std::fprintf(stderr, "usage: plan_flip [--torque-max-nm X] [--turn-rad R] [--iterations N] [--intervals A,B,C] [--out PATH]\n");
+  std::fprintf(stderr, "usage: plan_flip [--torque-max-nm X] [--turn-rad R] [--iterations N] [--intervals A,B,C] [--stance-force-min-n F] [--out PATH]\n");
   return 2;
 }
 
@@ -62,6 +62,8 @@ int main(int argc, char** argv) {
       request.limits.torque_max_nm = *number;
     } else if (option == "--turn-rad") {
       request.pitch_turn_rad = *number;
+    } else if (option == "--stance-force-min-n") {
+      request.limits.stance_force_min_n = *number;
     } else if (option == "--iterations") {
       request.max_iterations = static_cast<int>(*number);
     } else {

@@ -24,7 +24,7 @@ struct FlipLimits {
   double friction_mu = 0.6;
   // a stance foot carries at least this (N, each foot): a plan that barely loads a foot lets it
   // lift on the simulated body, where the contacts and the legs differ a little from the model
-  double stance_force_min_n = 10.0;
+  double stance_force_min_n = 15.0;
   double trunk_height_min_m = 0.12;  // the trunk origin above the ground (the trunk box is 0.0545 m thick below it)
   double landing_distance_max_m = 0.5;
   // the trunk still turning at most this fast when the feet reach the ground: the landing stand
