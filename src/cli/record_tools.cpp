@@ -1,5 +1,6 @@
 #include "cli/record_tools.hpp"
 
+#include "cli/video_progress.hpp"
 #include "loop/mc.hpp"
 
 namespace cerebellum {
@@ -37,7 +38,7 @@ bool SimTools::finish(std::FILE* out, std::FILE* err) {
                    static_cast<double>(queued) / options_.record_fps);
       std::fflush(out);
     }
-    const VideoResult video = video_->finish();
+    const VideoResult video = finish_video_showing_progress(*video_, out);
     if (video.ok) {
       std::fprintf(out, "video: %llu frames at %g fps (%llu repeated because rendering fell behind) written to %s\n",
                    static_cast<unsigned long long>(video.frames), options_.record_fps,

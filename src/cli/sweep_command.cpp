@@ -17,6 +17,7 @@
 #include "cli/sweep_slurm.hpp"
 #include "cli/sweep_workers.hpp"
 #include "core/text_file.hpp"
+#include "cli/video_progress.hpp"
 #include "observers/record_video.hpp"
 #include "sweep/result_row.hpp"
 #include "sweep/scenario_file.hpp"
@@ -58,8 +59,7 @@ RunAttachments video_attachments(const std::string& path) {
     mc.loop().add_observer(**recorder);
   };
   attachments.ending = [recorder, path](Mc&) {
-    std::fprintf(stderr, "cerebellum sweep: rendering the rest of the video...\n");
-    const VideoResult video = (*recorder)->finish();
+    const VideoResult video = finish_video_showing_progress(**recorder, stderr);
     if (!video.ok) throw std::runtime_error("the video " + path + " was not written completely (see ffmpeg's message above)");
     std::fprintf(stderr, "cerebellum sweep: video of %llu frames written to %s\n",
                  static_cast<unsigned long long>(video.frames), path.c_str());
