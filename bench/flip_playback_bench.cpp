@@ -1,7 +1,7 @@
 // The shipped flip file played open loop on the simulated robot, per seed (bench/flip_playback_run):
 //   flip_playback_bench [--file PATH] [--seeds A-B]   (default config/flips/back_flip.csv, seeds 0-0)
 // Seed 0 is the plan's own start; others perturb the start and the feet's friction. One row per
-// seed and a summary: rotation, landing distance, peak torque, flight, landed upright.
+// seed and a summary: rotation, flight, peak torque, temperature rise, landing distance, landed upright.
 #include <cstdio>
 #include <string>
 
@@ -31,8 +31,8 @@ int main(int argc, char** argv) {
     std::fprintf(stderr, "flip_playback_bench: %s\n", error.c_str());
     return 1;
   }
-  std::printf("| seed | turned at the plan's end (rad) | turned in all (rad) | flight (s) | peak torque (Nm) | rear knee (Nm) | landing distance (m) | landed upright |\n");
-  std::printf("|---|---|---|---|---|---|---|---|\n");
+  std::printf("| seed | turned at the plan's end (rad) | turned in all (rad) | flight (s) | peak torque (Nm) | rear knee (Nm) | temperature rise (deg C) | landing distance (m) | landed upright |\n");
+  std::printf("|---|---|---|---|---|---|---|---|---|\n");
   int upright = 0;
   for (long seed = first; seed <= last; ++seed) {
     FlipPlaybackSetup setup;
@@ -40,8 +40,8 @@ int main(int argc, char** argv) {
     setup.seed = static_cast<std::uint64_t>(seed);
     const FlipPlaybackOutcome o = play_flip_on_simulation(*trajectory, setup);
     upright += o.landed_upright ? 1 : 0;
-    std::printf("| %ld | %.2f | %.2f | %.3f | %.1f | %.1f | %.2f | %s |\n", seed, o.pitch_at_plan_end_rad, o.pitch_turned_rad,
-                o.flight_s, o.peak_torque_nm, o.peak_rear_knee_nm, o.landing_distance_m, o.landed_upright ? "yes" : "no");
+    std::printf("| %ld | %.2f | %.2f | %.3f | %.1f | %.1f | %.2f | %.2f | %s |\n", seed, o.pitch_at_plan_end_rad, o.pitch_turned_rad,
+                o.flight_s, o.peak_torque_nm, o.peak_rear_knee_nm, o.temperature_rise_c, o.landing_distance_m, o.landed_upright ? "yes" : "no");
   }
   std::printf("landed upright: %d of %ld\n", upright, last - first + 1);
   return 0;

@@ -48,6 +48,7 @@ FlipPlaybackOutcome play_flip_on_simulation(const FlipTrajectory& trajectory, co
 
   FlipPlaybackOutcome outcome;
   const GroundTruth before = robot.ground_truth();
+  const JointArray<double> temperature_before_c = robot.read().temperature_c;
   const double duration_s = flip_duration_s(trajectory);
   double airborne_s = 0.0;
   for (double t = 0.0; t < duration_s + setup.hold_s; t += kTickS) {
@@ -65,6 +66,9 @@ FlipPlaybackOutcome play_flip_on_simulation(const FlipTrajectory& trajectory, co
     outcome.flight_s = std::max(outcome.flight_s, airborne_s);
   }
   const GroundTruth after = robot.ground_truth();
+  const JointArray<double> temperature_after_c = robot.read().temperature_c;
+  for (std::size_t j = 0; j < kNumJoints; ++j)
+    outcome.temperature_rise_c = std::max(outcome.temperature_rise_c, temperature_after_c[j] - temperature_before_c[j]);
   outcome.landing_distance_m = std::hypot(after.position[0] - before.position[0], after.position[1] - before.position[1]);
   outcome.landed_upright = after.position[2] > 0.15 && tilt_from_upright(after.quat) < 0.5;
   return outcome;

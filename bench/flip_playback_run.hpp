@@ -28,7 +28,7 @@ struct FlipPlaybackOutcome {
   double peak_rear_knee_nm = 0.0;
   double landing_distance_m = 0.0;   // horizontal, trunk at the end from the trunk at the start
   double flight_s = 0.0;             // the longest time with no foot on the ground
-  double temperature_rise_c = 0.0;   // not measured here (0): the MC's motor heat runs in the backend
+  double temperature_rise_c = 0.0;   // the hottest motor winding's rise over the playback (deg C)
   bool landed_upright = false;       // at the end: trunk above 0.15 m, tilted less than 0.5 rad from upright
 };
 
