@@ -178,6 +178,8 @@ int main(int argc, char** argv) {
     table_options.terrain = row.terrain;
     table_options.speed_m_s = row.speed_m_s;
     table_options.to_x_m = row.to_x_m;
+    // half as long again as the walk takes at the commanded speed, and the start
+    table_options.seconds = 1.5 * row.to_x_m / row.speed_m_s + 5.0;
     table_options.first_seed = kFreshFirstSeed;
     table_options.last_seed = kFreshLastSeed;
     run_case(table_options);
