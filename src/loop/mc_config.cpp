@@ -33,6 +33,14 @@ std::string find_default_motions() {
   return CEREBELLUM_INSTALL_MOTION_DIR;
 }
 
+std::string find_default_back_flip() {
+  for (const char* dir : {CEREBELLUM_SOURCE_MODEL_DIR, CEREBELLUM_INSTALL_MODEL_DIR}) {
+    const fs::path candidate = fs::path(dir) / ".." / "config" / "flips" / "back_flip.csv";
+    if (fs::is_regular_file(candidate)) return candidate.lexically_normal().string();
+  }
+  return "";
+}
+
 void read_motions(const SectionReader& section, const fs::path& base_dir, MotionFolders& motions) {
   for (const auto& [key, folder] : {std::pair<const char*, std::string*>{"folder", &motions.folder},
                                     std::pair<const char*, std::string*>{"user_folder", &motions.user_folder}}) {
@@ -138,6 +146,7 @@ McConfig default_config() {
   McConfig config;
   config.robot.model_path = find_default_model();
   config.motions.folder = find_default_motions();
+  config.back_flip_path = find_default_back_flip();
   return config;
 }
 

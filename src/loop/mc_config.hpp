@@ -50,6 +50,9 @@ struct McConfig {
   AlienGoUdpConfig aliengo;              // the transport (section aliengo:)
   AlienGoSessionConfig aliengo_session;  // the sport session's timers (section aliengo: too)
   MotionFolders motions;                 // mode 62's motion files
+  // the back flip's plan (docs/jumps.md), beside the model's folder: models/../config/flips in the
+  // source tree and share/cerebellum/config/flips installed; empty: 16/20 is refused
+  std::string back_flip_path;
   SimTruthConfig sim_truth;              // simulation only
   SimControlConfig sim_command;          // simulation only
 };

@@ -28,7 +28,8 @@ JumpPlan force_jump_plan(const HighLevelCommand& command, const JumpLimits& limi
   return plan_force_jump(acceleration, command.acc_des[5], limits);
 }
 
-JumpMode::JumpMode(ModeId mode, const JumpControllerConfig& config) : mode_(mode), controller_(config) {}
+JumpMode::JumpMode(ModeId mode, const JumpControllerConfig& config, std::optional<FlipTrajectory> back_flip)
+    : mode_(mode), controller_(config), back_flip_(std::move(back_flip)) {}
 
 const char* JumpMode::check(const HighLevelCommand& command) const {
   const bool flip = command.gait_id == kBackFlipGaitId || command.gait_id == kFrontFlipGaitId;
@@ -40,7 +41,7 @@ const char* JumpMode::check(const HighLevelCommand& command) const {
 
 StartRefusal JumpMode::start_refusal(const RobotState& state, const HighLevelCommand& command) const {
   // a running jump ignores new commands (one-shot): nothing to refuse
-  if (!controller_.finished() && controller_.phase() != JumpPhase::Idle) return {};
+  if (flipping() || (!controller_.finished() && controller_.phase() != JumpPhase::Idle)) return {};
   if (mode_ == ModeId::Jump3d && (command.gait_id == kBackFlipGaitId || command.gait_id == kFrontFlipGaitId)) {
     const bool front = command.gait_id == kFrontFlipGaitId;
     switch (flip_gate(state, front ? Flip::Front : Flip::Back)) {
@@ -50,7 +51,8 @@ StartRefusal JumpMode::start_refusal(const RobotState& state, const HighLevelCom
                 front ? "front flip refused: battery below 50 %" : "back flip refused: battery below 20 %"};
       case FlipGate::Allowed: break;
     }
-    return {SwitchStatus::BanTransition, "flips are not available yet in this MC (docs/jumps.md)"};
+    if (front) return {SwitchStatus::BanTransition, "front flips are not available yet in this MC (docs/jumps.md)"};
+    if (!back_flip_) return {SwitchStatus::BanTransition, "back flip refused: no flip file was loaded"};
   }
   if (const char* reason = jump_refusal(state)) return {SwitchStatus::BanTransition, reason};
   return {};
@@ -58,6 +60,12 @@ StartRefusal JumpMode::start_refusal(const RobotState& state, const HighLevelCom
 
 void JumpMode::enter(const RobotState& state, const HighLevelCommand& command) {
   gait_ = command.gait_id;
+  flip_ = FlipRun{};
+  if (mode_ == ModeId::Jump3d && command.gait_id == kBackFlipGaitId && back_flip_) {
+    // the jump gate and the flip gate were passed at the start: the plan plays from this stand
+    flip_.start(state, *back_flip_);
+    return;
+  }
   if (mode_ == ModeId::Jump3d) {
     // the machine enters only with a jump id the table has (flips are refused before)
     const JumpSpec* spec = find_jump(command.gait_id);
@@ -73,16 +81,30 @@ void JumpMode::enter(const RobotState& state, const HighLevelCommand& command) {
 
 void JumpMode::update(const RobotState& state, const HighLevelCommand& command) {
   // one-shot: a jump runs to its end; a new command afterwards jumps again
-  if (controller_.finished()) enter(state, command);
+  if (!flipping() && controller_.finished()) enter(state, command);
 }
 
-void JumpMode::run(const RobotState& state, JointCommand& command) { controller_.compute(state, command); }
+void JumpMode::run(const RobotState& state, JointCommand& command) {
+  if (flipping()) {
+    flip_time_s_ = state.time_s;
+    flip_.compute(state, command);
+    if (!flip_.done()) return;
+    // down on its feet: the jump controller lands it
+    controller_.land(state);
+  }
+  controller_.compute(state, command);
+}
 
 ContactPlan JumpMode::contact_plan() const {
-  if (controller_.phase() != JumpPhase::Flight) return std::nullopt;
+  if (flipping() || controller_.phase() != JumpPhase::Flight) return std::nullopt;
   return ContactSchedule{};  // every foot: probability 0
 }
 
-int JumpMode::progress_percent() const { return static_cast<int>(std::floor(controller_.progress() * 100.0)); }
+int JumpMode::progress_percent() const {
+  // a flip: its own stages to 60 %, then the landing's share of the rest
+  if (flipping()) return static_cast<int>(std::floor(flip_.progress(flip_time_s_) * 60.0));
+  if (flip_.done()) return 60 + static_cast<int>(std::floor(controller_.progress() * 40.0));
+  return static_cast<int>(std::floor(controller_.progress() * 100.0));
+}
 
 }  // namespace cerebellum

@@ -8,6 +8,10 @@
 
 #include <array>
 
+#include <optional>
+
+#include "control/jump/flip_run.hpp"
+#include "control/jump/flip_trajectory.hpp"
 #include "control/jump/jump_controller.hpp"
 #include "modes/mode.hpp"
 
@@ -39,8 +43,9 @@ inline constexpr std::array<JumpSpec, 8> kJump3dTable{{
 }};
 
 // flips, this MC's documented extension of the mode-16 ids (the reference's table has no id for
-// them): refused with OVER_HEAT / LOW_BAT as the reference says, and otherwise with BAN_TRANS
-// until this MC can land them (docs/jumps.md)
+// them): refused with OVER_HEAT / LOW_BAT as the reference says; the back flip plays its planned
+// file (config/flips/back_flip.csv) from a still stand and lands as a jump lands; the front flip,
+// and the back flip without a file, are refused with BAN_TRANS (docs/jumps.md)
 inline constexpr int kBackFlipGaitId = 20;
 inline constexpr int kFrontFlipGaitId = 21;
 
@@ -55,8 +60,8 @@ JumpPlan force_jump_plan(const HighLevelCommand& command, const JumpLimits& limi
 
 class JumpMode final : public Mode {
  public:
-  // mode: ModeId::Jump3d or ModeId::ForceJump
-  JumpMode(ModeId mode, const JumpControllerConfig& config);
+  // mode: ModeId::Jump3d or ModeId::ForceJump; back_flip: the back flip's plan, if any
+  JumpMode(ModeId mode, const JumpControllerConfig& config, std::optional<FlipTrajectory> back_flip = std::nullopt);
   ModeId id() const override { return mode_; }
   const char* check(const HighLevelCommand& command) const override;
   StartRefusal start_refusal(const RobotState& state, const HighLevelCommand& command) const override;
@@ -65,9 +70,10 @@ class JumpMode final : public Mode {
   void run(const RobotState& state, JointCommand& command) override;
   int gait_id() const override { return gait_; }
   int progress_percent() const override;
-  bool holds_entry() const override { return !controller_.finished(); }
-  bool damping_protection() const override { return controller_.failed(); }
-  bool airborne() const override { return !controller_.finished(); }
+  bool holds_entry() const override { return flipping() || !controller_.finished(); }
+  bool damping_protection() const override { return !flipping() && controller_.failed(); }
+  bool airborne() const override { return flipping() || !controller_.finished(); }
+  bool turns_over() const override { return flip_.turning_over(); }
   // in flight no foot is on the ground: the legs swinging to the landing pose load their joints
   // as if their feet pushed, and the estimator, judging contacts from those forces, took them
   // for stance feet; otherwise nothing is planned (the force estimate judges the contacts)
@@ -76,8 +82,14 @@ class JumpMode final : public Mode {
   const JumpController& controller() const { return controller_; }
 
  private:
+  // a played flip before its landing (the controller lands it)
+  bool flipping() const { return flip_.stage() != FlipStage::Idle && !flip_.done(); }
+
   ModeId mode_;
   JumpController controller_;
+  std::optional<FlipTrajectory> back_flip_;
+  FlipRun flip_;
+  double flip_time_s_ = 0.0;  // the newest tick's time while flipping (for the progress bar)
   int gait_ = 0;
 };
 

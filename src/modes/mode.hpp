@@ -49,6 +49,9 @@ class Mode {
   virtual bool damping_protection() const { return false; }
   // true while the mode leaves the ground on purpose (a jump): feet without load are no lift
   virtual bool airborne() const { return false; }
+  // true while the mode turns the body over on purpose (a flip): the body watch's orientation and
+  // foot checks would read it as a fall; its own landing check takes over once it is down
+  virtual bool turns_over() const { return false; }
   // true while ending the mode now would drop the robot (a jump in the air, a two-leg stand off
   // its front feet): the get-down protection of a silent client waits until it is back on its
   // feet, and a client's command of another mode is refused meanwhile, except damping and off

@@ -7,6 +7,8 @@
 
 #include "control/locomotion/gait_table.hpp"
 #include "control/qp/goldfarb_idnani_solver.hpp"
+#include "control/jump/flip_trajectory.hpp"
+#include "core/robot_model.hpp"
 
 namespace cerebellum {
 namespace {
@@ -23,6 +25,15 @@ WalkingGaitsConfig walking_config(const ModeSetConfig& config) {
   walking.locomotion.ticks_per_segment = static_cast<int>(std::lround(kGaitSegmentS / config.loop_period_s));
   walking.failure_damping_kd = config.damping_kd;
   return walking;
+}
+
+// the back flip's file, read once with its reader's precise reason (throws std::invalid_argument)
+std::optional<FlipTrajectory> back_flip(const ModeSetConfig& config) {
+  if (config.back_flip_path.empty()) return std::nullopt;
+  std::string error;
+  std::optional<FlipTrajectory> trajectory = read_flip_trajectory(config.back_flip_path, robot::kTorqueMaxNm, error);
+  if (!trajectory) throw std::invalid_argument("back flip: " + error);
+  return trajectory;
 }
 
 JumpControllerConfig jump_config(const ModeSetConfig& config) {
@@ -52,7 +63,7 @@ ModeSet::ModeSet(const ModeSetConfig& config)
       locomotion_(gaits_),
       motions_(config.motions),
       motion_(motions_, {&pose_control_, &qp_stand_, &locomotion_, &recovery_stand_}, user_gait_slot_, user_gait_),
-      jump_(ModeId::Jump3d, jump_config(config)),
+      jump_(ModeId::Jump3d, jump_config(config), back_flip(config)),
       force_jump_(ModeId::ForceJump, jump_config(config)) {
   if (!config.robot_model_path.empty()) {
     two_leg_stand_ = std::make_unique<TwoLegStandMode>(two_leg_stand_config(config));

@@ -38,6 +38,9 @@ struct ModeSetConfig {
   MotionLibrary motions;
   // the robot's MuJoCo model, on which mode 64's balance is designed; empty: mode 64 is not offered
   std::string robot_model_path;
+  // the back flip's plan (control/jump/flip_trajectory), read when the set is built; empty: 16/20
+  // is refused
+  std::string back_flip_path;
 };
 
 class ModeSet {

@@ -53,6 +53,10 @@ BodyReaction SafetyReaction::watch_body(const RobotState& state, const ModeSwitc
     return {};
   }
   if (!watches_body(id)) return {};
+  if (current.turns_over()) {
+    lift_watch_ = LiftWatch{};
+    return {};
+  }
   const SafetyReport report = check_body(state, watches_feet(id));
   if (report.body_fault() && switcher.find(ModeId::PureDamper) != nullptr) {
     // tipped over or a foot out of reach: damp the joints, wait for a recovery stand

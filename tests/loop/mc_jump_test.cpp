@@ -218,17 +218,26 @@ TEST(McJumps, AJumpWhileTrottingAtOneMetrePerSecondIsRefusedWithTheReason) {
   EXPECT_GT(run.truth().velocity_world[0], 0.6);
 }
 
-TEST(McJumps, AFlipIsRefusedForLowBatteryBeforeItIsRefusedAsUnavailable) {
+TEST(McJumps, AFlipIsRefusedForLowBatteryBelowItsOwnThreshold) {
   JumpRun run;
   ASSERT_EQ(run.mc.faults()->request(parse_fault("battery soc 35").request.value()), "");
   run.client.run(high_level_command(ModeId::Locomotion, 1), 0.5);
   run.client.run(jump_command(kFrontFlipGaitId), 0.3);
   EXPECT_EQ(run.mc.machine().status().switch_status, SwitchStatus::LowBattery);
-  // a back flip needs only 20 %: past that gate, refused because this MC cannot land it
+  // a back flip needs only 20 %
+  ASSERT_EQ(run.mc.faults()->request(parse_fault("battery soc 15").request.value()), "");
+  run.client.run(high_level_command(ModeId::Locomotion, 1), 0.5);
   run.client.run(jump_command(kBackFlipGaitId), 0.3);
-  EXPECT_EQ(run.mc.machine().status().switch_status, SwitchStatus::BanTransition);
+  EXPECT_EQ(run.mc.machine().status().switch_status, SwitchStatus::LowBattery);
   EXPECT_EQ(run.mc.machine().status().mode, 11);
   EXPECT_GT(run.truth().position[2], 0.2);
+}
+
+TEST(McJumps, AFrontFlipIsRefusedAsUnavailable) {
+  JumpRun run;
+  run.client.run(jump_command(kFrontFlipGaitId), 0.3);
+  EXPECT_EQ(run.mc.machine().status().switch_status, SwitchStatus::BanTransition);
+  EXPECT_EQ(run.mc.machine().status().mode, 11);
 }
 
 TEST(McJumps, AClientThatVanishesMidJumpHasTheRobotLandBeforeItIsDamped) {

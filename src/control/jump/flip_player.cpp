@@ -3,6 +3,7 @@
 #include <algorithm>
 
 #include "core/joint_layout.hpp"
+#include "core/robot_model.hpp"
 
 namespace cerebellum {
 
@@ -40,11 +41,17 @@ JointCommand flip_play_command(const FlipTrajectory& trajectory, double t_s, con
     // the pair's hip and knee: motors 0, 1 (front) or 2, 3 (rear)
     const int first = is_front_leg(leg) ? 0 : 2;
     for (int k = 0; k < 2; ++k) {
+      const double qd_rad_s = ended ? 0.0 : sample.qd_rad_s[first + k];
+      // the interface takes qd_des within +-12 rad/s (the guard clamps it there) while the plan
+      // turns joints up to the motors' 30.5: the rate beyond goes into the feed-forward as the
+      // damping term it stands for, so the motor law gives the same torque
+      const double qd_des = std::clamp(qd_rad_s, -robot::kCommandQdDesMaxRadS, robot::kCommandQdDesMaxRadS);
+      const double tau_ff = (ended ? 0.0 : sample.tau_nm[first + k]) + gains.kd * (qd_rad_s - qd_des);
       command.q_des[j + 1 + k] = sample.q_rad[first + k];
-      command.qd_des[j + 1 + k] = ended ? 0.0 : sample.qd_rad_s[first + k];
+      command.qd_des[j + 1 + k] = qd_des;
       command.kp[j + 1 + k] = gains.kp;
       command.kd[j + 1 + k] = gains.kd;
-      command.tau_ff[j + 1 + k] = ended ? 0.0 : sample.tau_nm[first + k];
+      command.tau_ff[j + 1 + k] = std::clamp(tau_ff, -robot::kTorqueMaxNm, robot::kTorqueMaxNm);
     }
   }
   return command;

@@ -98,6 +98,12 @@ void JumpController::hold(const RobotState& state) {
   stand_.start(state);
 }
 
+void JumpController::land(const RobotState& state) {
+  start_s_ = last_time_s_ = state.time_s;
+  centred_ = false;
+  begin_landing(state);
+}
+
 double JumpController::progress() const {
   if (phase_ == JumpPhase::Idle) return 0.0;
   if (finished()) return 1.0;

@@ -84,6 +84,9 @@ class JumpController {
   void compute(const RobotState& state, JointCommand& command);
   // no jump: stand where the robot is (finished)
   void hold(const RobotState& state);
+  // a flight flown elsewhere (a played flip) has come down on its feet: land from here as a jump
+  // lands (the stand anchored at the feet brakes, then centres the trunk; a failed landing damps)
+  void land(const RobotState& state);
 
   JumpPhase phase() const { return phase_; }
   // 0..1 across crouch, push, flight and landing (1 once it stands, or failed)

@@ -1,0 +1,57 @@
+// The back flip (16/20) through the whole MC in lockstep, judged on the simulation's ground truth:
+// from the locomotion stand it plays the planned file, turns the trunk a full turn about its pitch
+// axis within the motors' limits and lands standing near its take-off (docs/jumps.md, "Flips").
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "backend/sim_fixture.hpp"
+#include "loop/lockstep_client.hpp"
+#include "loop/simulated_robot.hpp"
+#include "modes/jump_mode.hpp"
+
+namespace cerebellum {
+namespace {
+
+TEST(McFlips, ABackFlipFromAStandTurnsAFullTurnWithinTheMotorsLimitsAndStandsNearItsTakeOff) {
+  McConfig config = default_config();
+  config.startup = Startup::Off;
+  Mc mc = make_simulated_mc(config);
+  LockstepClient client(mc);
+  client.run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
+  client.run(high_level_command(ModeId::Locomotion, 1), 1.0);
+  const GroundTruth before = mc.simulation().ground_truth();
+  double turned_rad = 0.0;
+  double peak_torque_nm = 0.0;
+  bool damped = false;
+  int last_bar = 0;
+  bool progress_never_fell = true;
+  client.run(high_level_command(ModeId::Jump3d, kBackFlipGaitId), 5.0, [&](const CycleRecord&) {
+    const GroundTruth g = mc.simulation().ground_truth();
+    turned_rad += g.angular_velocity_body[1] * mc.config().loop_period_s;
+    for (double tau : g.tau) peak_torque_nm = std::max(peak_torque_nm, std::abs(tau));
+    const HighLevelStatus& s = mc.machine().status();
+    damped |= s.mode == static_cast<int>(ModeId::PureDamper);
+    if (s.mode == static_cast<int>(ModeId::Jump3d)) {
+      progress_never_fell &= s.order_process_bar >= last_bar;
+      last_bar = s.order_process_bar;
+    }
+  });
+  const GroundTruth after = mc.simulation().ground_truth();
+  const HighLevelStatus& status = mc.machine().status();
+  EXPECT_LT(turned_rad, -(2.0 * robot::kPi - 0.3));
+  EXPECT_LE(peak_torque_nm, robot::kTorqueMaxNm + 1e-9);
+  EXPECT_FALSE(damped);
+  EXPECT_LT(std::hypot(after.position[0] - before.position[0], after.position[1] - before.position[1]), 0.5);
+  const Eigen::Vector3d rpy = testing::truth_rpy(after);
+  EXPECT_LT(std::max(std::abs(rpy.x()), std::abs(rpy.y())), 0.1);
+  EXPECT_GT(after.position[2], 0.2);
+  EXPECT_EQ(status.mode, static_cast<int>(ModeId::Jump3d));
+  EXPECT_EQ(status.gait_id, kBackFlipGaitId);
+  EXPECT_EQ(status.order_process_bar, 100);
+  EXPECT_TRUE(progress_never_fell);
+}
+
+}  // namespace
+}  // namespace cerebellum
