@@ -5,6 +5,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <fstream>
+#include <stdexcept>
+#include <string>
 
 #include "backend/sim_fixture.hpp"
 #include "loop/lockstep_client.hpp"
@@ -51,6 +54,32 @@ TEST(McFlips, ABackFlipFromAStandTurnsAFullTurnWithinTheMotorsLimitsAndStandsNea
   EXPECT_EQ(status.gait_id, kBackFlipGaitId);
   EXPECT_EQ(status.order_process_bar, 100);
   EXPECT_TRUE(progress_never_fell);
+}
+
+TEST(McFlips, AMalformedFlipFileStopsTheStartWithItsLineAndReason) {
+  const std::string path = ::testing::TempDir() + "/bad_back_flip.csv";
+  std::ofstream(path) << "# a flip\ntime_s,phase\n0,0\n";
+  McConfig config = default_config();
+  config.back_flip_path = path;
+  try {
+    Mc mc = make_simulated_mc(config);
+    FAIL() << "the MC started with a malformed flip file";
+  } catch (const std::invalid_argument& error) {
+    EXPECT_EQ(std::string(error.what()).rfind("back flip: " + path + ": line 2: the header is not", 0), 0u) << error.what();
+  }
+}
+
+TEST(McFlips, WithoutAFlipFileTheBackFlipIsRefused) {
+  McConfig config = default_config();
+  config.startup = Startup::Off;
+  config.back_flip_path = "";
+  Mc mc = make_simulated_mc(config);
+  LockstepClient client(mc);
+  client.run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
+  client.run(high_level_command(ModeId::Locomotion, 1), 1.0);
+  client.run(high_level_command(ModeId::Jump3d, kBackFlipGaitId), 0.3);
+  EXPECT_EQ(mc.machine().status().switch_status, SwitchStatus::BanTransition);
+  EXPECT_EQ(mc.machine().status().mode, static_cast<int>(ModeId::Locomotion));
 }
 
 }  // namespace
