@@ -1,6 +1,8 @@
 // The flip planner as a tool: plans the back flip of the planar model (src/control/flip_plan)
 // with IPOPT and writes it as a flip file (src/control/jump/flip_trajectory.hpp).
-//   plan_flip [--torque-max-nm X] [--turn-rad R] [--iterations N] [--intervals A,B,C] [--stance-force-min-n F] [--out PATH]
+//   plan_flip [--torque-max-nm X] [--turn-rad R] [--iterations N] [--intervals A,B,C] [--stance-force-min-n F]
+//             [--last-pair front|rear] [--out PATH]
+// (a front flip: --last-pair front --turn-rad 6.2832)
 // (--intervals: the collocation intervals of the three phases, default 20,14,26)
 // --turn-rad 0 asks the largest back turn the limits allow instead of a full turn. Prints the
 // solver's status, the turn, the peak torques, the phases' durations and the model's residual.
@@ -19,7 +21,7 @@ namespace {
 using namespace cerebellum;
 
 int usage() {
-  std::fprintf(stderr, "usage: plan_flip [--torque-max-nm X] [--turn-rad R] [--iterations N] [--intervals A,B,C] [--stance-force-min-n F] [--out PATH]\n");
+  std::fprintf(stderr, "usage: plan_flip [--torque-max-nm X] [--turn-rad R] [--iterations N] [--intervals A,B,C] [--stance-force-min-n F] [--last-pair front|rear] [--out PATH]\n");
   return 2;
 }
 
@@ -31,12 +33,13 @@ FlipTrajectory trajectory_of(const flip::FlipPlan& plan) {
 }
 
 std::vector<std::string> comment_of(const flip::FlipRequest& request, const flip::FlipPlan& plan) {
-  return {"cerebellum flip file: a back flip planned by bench/plan_flip (docs/jumps.md, \"Flips\")",
+  return {std::string("cerebellum flip file: ") + (request.pitch_turn_rad > 0.0 ? "a front flip" : "a back flip") +
+              " planned by bench/plan_flip (docs/jumps.md, \"Flips\")",
           "solver: IPOPT, trapezoidal collocation of the planar model; status: " + plan.status + "; feasible: " +
               (plan.feasible ? "yes" : "no") + " (largest violation " + number_text(plan.max_constraint_violation, 3) + ")",
           "torque limit " + number_text(request.limits.torque_max_nm, 4) + " Nm per motor, friction " +
               number_text(request.limits.friction_mu, 3) + ", turn " + number_text(plan.pitch_turned_rad, 5) + " rad",
-          "phases (s): both pairs push " + number_text(plan.duration_s[0], 4) + ", rear pair pushes " +
+          "phases (s): both pairs push " + number_text(plan.duration_s[0], 4) + ", the last pair pushes " +
               number_text(plan.duration_s[1], 4) + ", flight " + number_text(plan.duration_s[2], 4),
           "per motor: front hip, front knee, rear hip, rear knee; the two legs of a pair alike; SDK signs"};
 }
@@ -56,6 +59,9 @@ int main(int argc, char** argv) {
     } else if (option == "--intervals") {
       if (std::sscanf(value.c_str(), "%d,%d,%d", &request.intervals[0], &request.intervals[1], &request.intervals[2]) != 3)
         return usage();
+    } else if (option == "--last-pair") {
+      if (value != "front" && value != "rear") return usage();
+      request.last_pushing_pair = value == "front" ? flip::kFrontPairLast : flip::kRearPairLast;
     } else if (!number) {
       return usage();
     } else if (option == "--torque-max-nm") {
@@ -72,7 +78,7 @@ int main(int argc, char** argv) {
   }
   const flip::FlipPlan plan = flip::plan_flip(request);
   std::printf("status: %s\nturn: %.4f rad\npeak torque (Nm): front hip %.2f, front knee %.2f, rear hip %.2f, rear knee %.2f\n"
-              "phases (s): both pairs push %.3f, rear pair pushes %.3f, flight %.3f\nlargest model residual: %.2e\nfeasible: %s (largest constraint violation %.2e)\n",
+              "phases (s): both pairs push %.3f, the last pair pushes %.3f, flight %.3f\nlargest model residual: %.2e\nfeasible: %s (largest constraint violation %.2e)\n",
               plan.status.c_str(), plan.pitch_turned_rad, plan.peak_torque_nm[0], plan.peak_torque_nm[1],
               plan.peak_torque_nm[2], plan.peak_torque_nm[3], plan.duration_s[0], plan.duration_s[1], plan.duration_s[2],
               plan.max_dynamics_residual, plan.feasible ? "yes" : "no", plan.max_constraint_violation);

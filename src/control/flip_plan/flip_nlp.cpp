@@ -50,9 +50,11 @@ constexpr double kTouchdownClearanceM = 0.03;
 constexpr double kLandingTrunkMinM = 0.18;
 constexpr double kLandingTrunkMaxM = 0.36;
 
-bool front_in_stance(int phase) { return phase == kBothPairsPush; }
-bool rear_in_stance(int phase) { return phase != kFlight; }
-bool in_stance(int pair, int phase) { return pair == kFrontPair ? front_in_stance(phase) : rear_in_stance(phase); }
+// both pairs push, then the last pair alone (the rear for a back flip, the front for a front flip)
+bool in_stance(int pair, int phase, int last_pair) {
+  if (phase == kBothPairsPush) return true;
+  return phase != kFlight && pair == last_pair;
+}
 
 // the knot's constraints, for a double or an automatic-differentiation scalar
 template <typename T>
@@ -138,7 +140,7 @@ class FlipNlp : public Ipopt::TNLP {
         lo[kQ + hip_coordinate(pair)] = hip.lower, hi[kQ + hip_coordinate(pair)] = hip.upper;
         lo[kQ + knee_coordinate(pair)] = knee.lower, hi[kQ + knee_coordinate(pair)] = knee.upper;
         // the ground pushes, never pulls; a foot in the air carries nothing
-        if (in_stance(pair, phase)) {
+        if (in_stance(pair, phase, request_.last_pushing_pair)) {
           lo[kForce + 2 * pair + 1] = lim.stance_force_min_n;
         } else {
           lo[kForce + 2 * pair] = hi[kForce + 2 * pair] = 0.0;
@@ -177,7 +179,7 @@ class FlipNlp : public Ipopt::TNLP {
       Number* hi = g_u + k * kKnotRows;
       const int phase = knot_phase(k);
       for (int pair = 0; pair < kPairs; ++pair) {
-        if (in_stance(pair, phase)) {
+        if (in_stance(pair, phase, request_.last_pushing_pair)) {
           lo[kFeetRow + 2 * pair] = hi[kFeetRow + 2 * pair] = stance_x_m_[pair];
           lo[kFeetRow + 2 * pair + 1] = hi[kFeetRow + 2 * pair + 1] = robot::kFootRadius;
         } else {

@@ -13,6 +13,9 @@ namespace cerebellum::flip {
 // the phases in their order: the four feet push, the rear pair alone pushes the body over the
 // front, flight
 enum FlipPhase : int { kBothPairsPush = 0, kRearPairPushes = 1, kFlight = 2, kFlipPhases = 3 };
+// which pair pushes alone in the second phase (planar_model's Pair: 0 front, 1 rear)
+inline constexpr int kFrontPairLast = 0;
+inline constexpr int kRearPairLast = 1;
 const char* flip_phase_name(int phase);
 
 struct FlipLimits {
@@ -40,6 +43,9 @@ struct FlipRequest {
   // the pitch turned by the end of the flight (rad, SDK sign: a back flip is negative); 0 asks
   // the largest back turn the limits allow (the objective becomes the turn)
   double pitch_turn_rad = -2.0 * robot::kPi;
+  // the pair that pushes alone before the flight: the rear for a back flip (the body goes over
+  // it backwards); a front flip asks the front pair and a positive turn
+  int last_pushing_pair = kRearPairLast;
   std::array<int, kFlipPhases> intervals{20, 14, 26};
   std::array<double, kFlipPhases> duration_min_s{0.15, 0.08, 0.25};
   // short pushes: the played plan is open loop until it lands, and a slow lean over the rear feet
