@@ -4,11 +4,11 @@
 
 #include <algorithm>
 #include <cmath>
-#include <cstdlib>
 #include <random>
 #include <set>
 #include <stdexcept>
 
+#include "core/number_text.hpp"
 #include "core/text_file.hpp"
 
 namespace cerebellum {
@@ -64,11 +64,9 @@ std::vector<std::string> split(const std::string& text, char separator) {
 
 double spec_number(const std::string& spec, const std::string& what, const std::string& text, double lower,
                    double upper) {
-  char* end = nullptr;
-  const double value = std::strtod(text.c_str(), &end);
-  if (text.empty() || end != text.c_str() + text.size() || !std::isfinite(value)) {
-    bad_spec(spec, what + " must be a number, got '" + text + "'");
-  }
+  const std::optional<double> number = finite_number(text);
+  if (!number) bad_spec(spec, what + " must be a number, got '" + text + "'");
+  const double value = *number;
   if (!(value > lower && value <= upper)) {
     char range[96];
     std::snprintf(range, sizeof range, " must be in (%g, %g], got %g", lower, upper, value);

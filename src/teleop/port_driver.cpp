@@ -13,9 +13,16 @@ double next_on_grid(double scheduled_s, double now_s) {
 
 }  // namespace
 
-void PortDriver::submit(const HighLevelCommand& command, double now_s, bool heartbeat) {
-  if (!port_.submit(command, now_s)) ++dropped_;
-  next_heartbeat_s_ = heartbeat ? next_on_grid(next_heartbeat_s_, now_s) : now_s + kClientHeartbeatPeriodS;
+void PortDriver::send_new(const HighLevelCommand& command, double now_s) {
+  current_ = command;
+  current_->life_count = ++life_count_ % 128;  // the wire's life_count is a small counter too
+  if (!port_.submit(*current_, now_s)) ++dropped_;
+  next_heartbeat_s_ = now_s + kClientHeartbeatPeriodS;  // the grid restarts at a new command
+}
+
+void PortDriver::send_heartbeat(double now_s) {
+  if (!port_.submit(*current_, now_s)) ++dropped_;
+  next_heartbeat_s_ = next_on_grid(next_heartbeat_s_, now_s);
 }
 
 void PortDriver::drive(const PadState& pad, bool pressed, double now_s) {
@@ -24,23 +31,18 @@ void PortDriver::drive(const PadState& pad, bool pressed, double now_s) {
     const DriveStep step = mapping_.next(pad);
     next_sample_s_ = next_on_grid(next_sample_s_, now_s);
     if (step.is_new) {
-      current_ = step.command;
-      current_->life_count = ++life_count_ % 128;  // the wire's life_count is a small counter too
-      submit(*current_, now_s, false);
+      send_new(step.command, now_s);
       return;
     }
   }
-  if (current_ && now_s >= next_heartbeat_s_) submit(*current_, now_s, true);
+  if (current_ && now_s >= next_heartbeat_s_) send_heartbeat(now_s);
 }
 
 void PortDriver::stop(double now_s) {
   if (stopped_) return;
   stopped_ = true;
   const DriveStep step = mapping_.stop();
-  if (!step.is_new) return;
-  current_ = step.command;
-  current_->life_count = ++life_count_ % 128;
-  submit(*current_, now_s, false);
+  if (step.is_new) send_new(step.command, now_s);
 }
 
 }  // namespace cerebellum

@@ -31,8 +31,10 @@ class PortDriver {
   std::uint64_t dropped() const { return dropped_; }
 
  private:
-  // heartbeat: the running command repeated (on the period's grid), else a new one (the grid restarts)
-  void submit(const HighLevelCommand& command, double now_s, bool heartbeat);
+  // a new command: a new life_count, the heartbeat's grid restarted from now
+  void send_new(const HighLevelCommand& command, double now_s);
+  // the running command repeated, on the heartbeat period's grid
+  void send_heartbeat(double now_s);
 
   ClientPort port_;
   PadMapping mapping_;
