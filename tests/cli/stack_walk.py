@@ -45,6 +45,12 @@ def tilt_deg(q):
 
 def fail(text):
     print("stack_walk: FAILED: " + text)
+    # what the two MCs said besides their once-a-second state lines: the link's events, refusals
+    for name in ("STACK_B_LOG", "STACK_A_LOG"):
+        if name in os.environ and os.path.exists(os.environ[name]):
+            with open(os.environ[name]) as log:
+                events = [line.rstrip() for line in log if not line.startswith(("t=", "    "))]
+            print("stack_walk: %s's events:\n  %s" % (name[6], "\n  ".join(events[-25:])))
     sys.exit(1)
 
 

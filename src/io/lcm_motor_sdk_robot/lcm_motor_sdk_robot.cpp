@@ -19,7 +19,7 @@ constexpr const char* kInterfaceName = "cyberdog2 motor sdk robot";
 constexpr double kClientPeriodS = 0.002;
 // the thread wakes at least every millisecond (handle_pending's wait): a longer gap between its
 // steps is a pause of its own (descheduled, the machine stalled), after which the link watch
-// starts again
+// starts again (listening_window.hpp)
 constexpr double kListeningPauseS = 0.005;
 // link events (lost, back) a flapping link can provoke: a few per second, the rest summed up
 constexpr int kLinkLinesPerSecond = 4;
@@ -66,6 +66,7 @@ LcmMotorSdkRobot::LcmMotorSdkRobot(const MotorSdkRobotConfig& config, std::FILE*
       control_lcm_(open_lcm_url(config.control_url, kInterfaceName)),
       estimator_lcm_(open_lcm_url(config.estimator_url, kInterfaceName)),
       client_(config),
+      listening_(kListeningPauseS),
       link_log_(log, "cyberdog2", "link events", kLinkLinesPerSecond),
       count_log_period_(wall_seconds()) {
   control_lcm_->subscribe(kSpiDataChannel, &LcmMotorSdkRobot::on_spi_data, this);
@@ -80,8 +81,7 @@ SensorFrame LcmMotorSdkRobot::read() {
   while (const std::optional<Joints> joints = joints_.try_pop()) client_.take_joints(joints->state, joints->received_s);
   while (const std::optional<Imu> imu = imu_.try_pop()) client_.take_imu(imu->sample, imu->received_s);
   while (const std::optional<std::uint16_t> err_flag = err_flags_.try_pop()) client_.take_err_flag(*err_flag);
-  const SensorFrame frame =
-      client_.frame(wall_seconds(), robot_time_s_, listening_since_s_.load(std::memory_order_acquire));
+  const SensorFrame frame = client_.frame(listening_.window(), robot_time_s_);
   statuses_.try_push(StatusAt{client_.status(), robot_time_s_});
   return frame;
 }
@@ -105,9 +105,7 @@ bool LcmMotorSdkRobot::activate(const std::atomic<bool>& stop) {
 }
 
 void LcmMotorSdkRobot::step() {
-  const double now_s = wall_seconds();
-  if (now_s - last_step_s_ > kListeningPauseS) listening_since_s_.store(now_s, std::memory_order_release);
-  last_step_s_ = now_s;
+  listening_.step(wall_seconds());
   handle_pending(*control_lcm_, 1);
   handle_pending(*estimator_lcm_, 0);
   while (const std::optional<motor_ctrl_lcmt> frame = frames_.try_pop()) {

@@ -17,6 +17,7 @@
 #include "io/common/count.hpp"
 #include "io/common/count_report.hpp"
 #include "io/common/rate_limited_log.hpp"
+#include "io/lcm_motor_sdk_robot/listening_window.hpp"
 #include "io/lcm_motor_sdk_robot/motor_sdk_client.hpp"
 #include "motor_ctrl_lcmt.hpp"
 
@@ -88,13 +89,12 @@ class LcmMotorSdkRobot final : public RobotBackend {
   SpscRing<motor_ctrl_lcmt, 32> frames_;
   SpscRing<StatusAt, 64> statuses_;
   MotorSdkRobotRejections rejected_;
-  // since when the thread has listened without a pause of its own (wall seconds)
-  std::atomic<double> listening_since_s_{0.0};
   // loop thread only
   MotorSdkClient client_;
   double robot_time_s_ = 0.0;
+  // the backend's thread steps it, the loop thread reads its window (wall seconds)
+  ListeningClock listening_;
   // backend's thread only
-  double last_step_s_ = 0.0;
   StatusAt logged_;
   RateLimitedLog link_log_;
   std::uint64_t counts_logged_ = 0;

@@ -47,16 +47,17 @@ void MotorSdkClient::take_err_flag(std::uint16_t err_flag) {
   if (err_flag & (kMotorSdkAbadJump | kMotorSdkHipJump | kMotorSdkKneeJump)) ++status_.jump_reports;
 }
 
-SensorFrame MotorSdkClient::frame(double now_s, double robot_time_s, double listening_since_s) {
+SensorFrame MotorSdkClient::frame(const ListeningWindow& window, double robot_time_s) {
   const bool heard = have_joints_ && have_imu_;
   const double silent_s =
-      heard ? now_s - std::max(std::min(joints_received_s_, imu_received_s_), listening_since_s) : 0.0;
+      heard ? std::max(0.0, window.until_s - std::max(std::min(joints_received_s_, imu_received_s_), window.since_s))
+            : 0.0;
   // once lost, only a fresh message brings the link back (a pause of the receiver does not)
   const bool fresh_since_loss = heard && std::min(joints_received_s_, imu_received_s_) > lost_at_s_;
   const bool lost = !heard || silent_s > config_.link_timeout_s || (status_.link_lost && !fresh_since_loss);
   if (lost && !status_.link_lost && heard) {
     ++status_.link_losses;
-    lost_at_s_ = now_s;
+    lost_at_s_ = window.until_s;
   }
   status_.link_lost = lost;
   status_.link_silent_s = silent_s;

@@ -5,8 +5,8 @@
 // - a motor reporting an error: stop commanding at once (damping frames, latched until restart);
 // - the vendor's command ranges and position-jump steps applied before sending, counted;
 // - the link watch: no fresh spi_data or state_estimator for link_timeout_s -> every motor reads
-//   "disconnected" in the sensor frame, so the health monitor damps the legs (counted from when
-//   the receiver last resumed listening, if it paused).
+//   "disconnected" in the sensor frame, so the health monitor damps the legs (silence counted only
+//   over the receiver's listening window: listening_window.hpp).
 #pragma once
 
 #include <cstdint>
@@ -14,6 +14,7 @@
 #include "core/types.hpp"
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
 #include "io/lcm_motor_sdk/robot_state_messages.hpp"
+#include "io/lcm_motor_sdk_robot/listening_window.hpp"
 #include "io/lcm_motor_sdk_robot/motor_sdk_robot_config.hpp"
 
 namespace cerebellum {
@@ -43,11 +44,11 @@ class MotorSdkClient {
   void take_imu(const ImuSample& imu, double received_s);
   void take_err_flag(std::uint16_t err_flag);
 
-  // the sensor frame at now_s on the link's clock, stamped robot_time_s. listening_since_s: since
-  // when the receiving thread has been listening without a pause of its own; silence before it
-  // does not count, since a receiver that was not running cannot tell a silent robot (a process
-  // or a machine paused, as a loaded host does, is not a lost link)
-  SensorFrame frame(double now_s, double robot_time_s, double listening_since_s = 0.0);
+  // the sensor frame, stamped robot_time_s, with the link judged over the receiver's listening
+  // window (on the link's clock): the silence runs from the newer of the last message and
+  // window.since_s to window.until_s, since a receiver that was not running cannot tell a silent
+  // robot (a process or a machine paused, as a loaded host does, is not a lost link)
+  SensorFrame frame(const ListeningWindow& window, double robot_time_s);
   // the frame to send (SDK convention) for the MC's command
   JointCommand command(const JointCommand& mc_command);
 

@@ -36,6 +36,9 @@ bool all_zero(const JointCommand& frame) {
   return true;
 }
 
+// a receiver that has listened without a pause since since_s, its newest step at until_s
+ListeningWindow listened(double until_s, double since_s = 0.0) { return ListeningWindow{since_s, until_s}; }
+
 // the client with fresh joints and IMU at time now_s on the link's clock
 MotorSdkClient heard_client(double now_s = 0.0) {
   MotorSdkClient client{MotorSdkRobotConfig{}};
@@ -86,7 +89,7 @@ TEST(MotorSdkClient, KeepsTheCommandInsideTheVendorsRangesAndPositionJumps) {
   command.tau_ff[1] = -30.0;             // below -12 Nm
   command.q_des[3] += robot::deg(20.0);  // an abad step of 20 degrees: 8 allowed
   command.q_des[5] += robot::deg(11.0);  // a knee step of 11 degrees: within 12
-  client.frame(0.0, 0.0);
+  client.frame(listened(0.0), 0.0);
   const JointCommand frame = client.command(command);
   EXPECT_DOUBLE_EQ(frame.kp[0], robot::kCommandKpMax);
   EXPECT_DOUBLE_EQ(frame.tau_ff[1], -robot::kTorqueMaxNm);
@@ -98,36 +101,52 @@ TEST(MotorSdkClient, KeepsTheCommandInsideTheVendorsRangesAndPositionJumps) {
 
 TEST(MotorSdkClient, ReportsEveryMotorDisconnectedWhenNoStateCameFor20Ms) {
   MotorSdkClient client = heard_client(1.000);
-  SensorFrame frame = client.frame(1.019, 5.0);
+  SensorFrame frame = client.frame(listened(1.019), 5.0);
   EXPECT_EQ(frame.motor_faults[0], kMotorOk) << "19 ms of silence is a healthy link";
   EXPECT_DOUBLE_EQ(frame.time_s, 5.0) << "stamped with the robot time";
-  frame = client.frame(1.021, 5.002);
+  frame = client.frame(listened(1.021), 5.002);
   for (std::size_t i = 0; i < kNumJoints; ++i) EXPECT_TRUE(frame.motor_faults[i] & kMotorDisconnected) << i;
   EXPECT_TRUE(client.status().link_lost);
   EXPECT_EQ(client.status().link_losses, 1u);
-  client.frame(1.030, 5.004);
+  client.frame(listened(1.030), 5.004);
   EXPECT_EQ(client.status().link_losses, 1u) << "one loss, however long";
   // the IMU alone is not the link: spi_data must come too
   client.take_imu(ImuSample{}, 1.031);
-  EXPECT_TRUE(client.frame(1.032, 5.006).motor_faults[0] & kMotorDisconnected);
+  EXPECT_TRUE(client.frame(listened(1.032), 5.006).motor_faults[0] & kMotorDisconnected);
   client.take_joints(lying_joints(), 1.032);
-  EXPECT_EQ(client.frame(1.033, 5.008).motor_faults[0], kMotorOk) << "fresh state: the link is back";
+  EXPECT_EQ(client.frame(listened(1.033), 5.008).motor_faults[0], kMotorOk) << "fresh state: the link is back";
 }
 
 TEST(MotorSdkClient, ASilenceWhileTheReceiverItselfWasPausedIsNotALostLink) {
   MotorSdkClient client = heard_client(1.000);
   // the receiving thread paused (descheduled, the machine stalled) and listens again since 1.025 s
-  EXPECT_EQ(client.frame(1.030, 5.0, 1.025).motor_faults[0], kMotorOk) << "5 ms of listening, not 30 ms";
+  EXPECT_EQ(client.frame(listened(1.030, 1.025), 5.0).motor_faults[0], kMotorOk) << "5 ms of listening, not 30 ms";
   EXPECT_FALSE(client.status().link_lost);
-  EXPECT_TRUE(client.frame(1.046, 5.002, 1.025).motor_faults[0] & kMotorDisconnected)
+  EXPECT_TRUE(client.frame(listened(1.046, 1.025), 5.002).motor_faults[0] & kMotorDisconnected)
       << "21 ms of listening without a word: lost";
-  EXPECT_TRUE(client.frame(1.050, 5.004, 1.048).motor_faults[0] & kMotorDisconnected)
+  EXPECT_TRUE(client.frame(listened(1.050, 1.048), 5.004).motor_faults[0] & kMotorDisconnected)
       << "once lost, a pause of the receiver does not bring the link back: only a fresh message does";
+}
+
+TEST(MotorSdkClient, AfterAStallOfTheWholeMachineTheLinkIsJudgedOnlyOnceTheReceiverHasListenedAgain) {
+  ListeningClock receiver(0.005);
+  MotorSdkClient client = heard_client(1.000);
+  receiver.step(1.000);
+  receiver.step(1.001);
+  // the machine stalls 30 ms; the loop's thread runs first when it resumes, before the receiver
+  // has taken what the robot sent meanwhile: its clock reads 1.031, the receiver's last step 1.001
+  EXPECT_EQ(client.frame(receiver.window(), 5.0).motor_faults[0], kMotorOk)
+      << "30 ms on the reader's clock, but the receiver was not listening";
+  receiver.step(1.031);
+  EXPECT_EQ(client.frame(receiver.window(), 5.002).motor_faults[0], kMotorOk) << "it listens again from 1.031 s";
+  for (double step_s = 1.032; step_s < 1.052; step_s += 0.001) receiver.step(step_s);  // listening, nothing comes
+  EXPECT_TRUE(client.frame(receiver.window(), 5.004).motor_faults[0] & kMotorDisconnected)
+      << "over 20 ms of listening without a word: lost";
 }
 
 TEST(MotorSdkClient, ARobotNeverHeardIsALostLink) {
   MotorSdkClient client{MotorSdkRobotConfig{}};
-  EXPECT_TRUE(client.frame(0.0, 0.0).motor_faults[0] & kMotorDisconnected);
+  EXPECT_TRUE(client.frame(listened(0.0), 0.0).motor_faults[0] & kMotorDisconnected);
   EXPECT_EQ(client.status().link_losses, 0u) << "never heard is not a loss";
 }
 
