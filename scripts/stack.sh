@@ -49,21 +49,8 @@ wait_ready() {
   return 1
 }
 
-# a robot's own MC runs on hardware of its own, and an MC on a robot at real-time priority: here A
-# (the robot) gets core 1 and SCHED_RR 20, B SCHED_RR 10 on either core (its link thread and its
-# MPC worker must not wait for each other on one core), where the system allows it (root or
-# CAP_SYS_NICE, two cores), so a loaded machine delays neither past B's link watch; said when not
-robot_placement=()
-mc_placement=()
-if chrt -r 20 true 2>/dev/null && [[ $(nproc) -ge 2 ]]; then
-  robot_placement=(taskset -c 1 chrt -r 20)
-  mc_placement=(chrt -r 10)
-  echo "stack.sh: A on core 1 at SCHED_RR 20, B at SCHED_RR 10"
-else
-  echo "stack.sh: no real-time priority or no second core here (needs root or CAP_SYS_NICE): A and B run at" \
-       "normal priority, and a loaded machine may trip B's link watch"
-fi
-
+# each MC's real-time settings (priority, CPUs, locked memory) are in its configuration's
+# `realtime:` section, and each says at start what it got and what the system refused
 a_pid=""
 b_pid=""
 stop_both() {
@@ -75,11 +62,11 @@ stop_both() {
 trap stop_both EXIT
 trap 'exit 130' INT TERM
 
-"${robot_placement[@]}" "$exe" sim --speed 1 --config "$root/config/stack/sim.yaml" > "$a_log" 2>&1 &
+"$exe" sim --speed 1 --config "$root/config/stack/sim.yaml" > "$a_log" 2>&1 &
 a_pid=$!
 wait_ready "$a_pid" "$a_log" "MC A (cerebellum sim)" 60
 # B activates A's motor mode before its ready line: the robot lies 2 s first
-"${mc_placement[@]}" "$exe" run --config "$root/config/stack/cyberdog2-motor-sdk.yaml" > "$b_log" 2>&1 &
+"$exe" run --config "$root/config/stack/cyberdog2-motor-sdk.yaml" > "$b_log" 2>&1 &
 b_pid=$!
 wait_ready "$b_pid" "$b_log" "MC B (cerebellum run)" 60
 echo "stack.sh: A (pid $a_pid, log $a_log) and B (pid $b_pid, log $b_log) ready"

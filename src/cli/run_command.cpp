@@ -6,6 +6,7 @@
 #include <optional>
 
 #include "cli/client_interfaces.hpp"
+#include "cli/realtime_setup.hpp"
 #include "cli/run_options.hpp"
 #include "cli/served_endpoints.hpp"
 #include "cli/stop_signal.hpp"
@@ -44,7 +45,8 @@ int run_run_command(const std::vector<std::string>& args) {
     return 2;
   }
 
-  // before any thread starts, so every thread inherits the blocked signals
+  // before any thread starts, so every thread inherits the scheduling, the CPUs and the blocked signals
+  for (const std::string& line : apply_realtime(config.realtime).lines) std::printf("%s\n", line.c_str());
   StopSignal stop_signal;
   try {
     auto backend = std::make_unique<LcmMotorSdkRobot>(config.motor_sdk_robot, stderr);

@@ -13,6 +13,7 @@
 #include "cli/served_endpoints.hpp"
 #include "loop/simulated_robot.hpp"
 #include "cli/fault_scenario_file.hpp"
+#include "cli/realtime_setup.hpp"
 #include "cli/stop_signal.hpp"
 #include "cli/client_interfaces.hpp"
 #include "io/lcm_sim_control/sim_control_adapter.hpp"
@@ -46,6 +47,8 @@ int run_sim_command(const std::vector<std::string>& args) {
     return 2;
   }
 
+  // before any thread starts, so every thread inherits the scheduling and the CPUs
+  for (const std::string& line : apply_realtime(config.realtime).lines) std::printf("%s\n", line.c_str());
   StopSignal stop_signal;
   try {
     Mc mc = make_simulated_mc(config, faults);

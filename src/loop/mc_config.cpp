@@ -162,7 +162,7 @@ McConfig load_config(const std::string& path) {
   McConfig config = default_config();
   if (root.IsNull()) return config;
   const SectionReader top(root, path, "<top>",
-                          {"mc", "robot", "loop", "stand_up", "safety", "shm", "motor_sdk", "highlevel", "aliengo",
+                          {"mc", "robot", "loop", "realtime", "stand_up", "safety", "shm", "motor_sdk", "highlevel", "aliengo",
                            "motions", "sim_truth", "sim_command"});
   const fs::path base_dir = fs::absolute(path).parent_path();
 
@@ -178,6 +178,17 @@ McConfig load_config(const std::string& path) {
   if (root["robot"]) read_robot_section(root["robot"], path, base_dir.string(), config);
   if (root["loop"]) {
     SectionReader(root["loop"], path, "loop", {"period_s"}).number("period_s", config.loop_period_s, 0.001, 0.01);
+  }
+  if (root["realtime"]) {
+    const SectionReader s(root["realtime"], path, "realtime", {"priority", "lock_memory", "cpus"});
+    double priority = config.realtime.priority;
+    s.number("priority", priority, 0, kRealtimePriorityMax);
+    if (priority != std::floor(priority)) {
+      s.fail("realtime.priority", "must be a whole number in [0, " + std::to_string(kRealtimePriorityMax) + "]");
+    }
+    config.realtime.priority = static_cast<int>(priority);
+    s.flag("lock_memory", config.realtime.lock_memory);
+    s.unsigned_list("cpus", config.realtime.cpus, kRealtimeCpuMax);
   }
   if (root["stand_up"]) {
     const SectionReader s(root["stand_up"], path, "stand_up", {"fold_duration_s", "rise_duration_s", "kp", "kd"});

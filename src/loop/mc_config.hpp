@@ -6,6 +6,7 @@
 #include <string>
 
 #include "loop/config_error.hpp"
+#include "loop/realtime_config.hpp"
 #include "loop/robot_kind.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "control/stand_up_controller.hpp"
@@ -42,6 +43,7 @@ struct McConfig {
   MujocoBackendConfig robot;               // the simulation (and the model every kind reads)
   MotorSdkRobotConfig motor_sdk_robot;     // robot.cyberdog2_motor_sdk: the CyberDog2's motor SDK link
   double loop_period_s = 0.002;
+  RealtimeConfig realtime;  // the process's scheduling, memory locking and CPUs
   StandUpConfig stand_up = default_stand_up_config();
   GuardLimits safety;
   ShmLowLevelConfig shm;

@@ -65,6 +65,27 @@ void SectionReader::unsigned_integer(const std::string& key, unsigned& value) co
   }
 }
 
+void SectionReader::unsigned_list(const std::string& key, std::vector<unsigned>& values, unsigned upper) const {
+  if (!node_[key]) return;
+  const YAML::Node node = node_[key];
+  const std::string expected = "must be a list of whole numbers in [0, " + std::to_string(upper) + "], each once";
+  if (!node.IsSequence()) fail(qualified(key), expected + ", for example [1] or [2, 3]");
+  std::vector<unsigned> parsed;
+  for (const YAML::Node& item : node) {
+    double number = -1.0;
+    if (!item.IsScalar() || !YAML::convert<double>::decode(item, number) || number != std::floor(number) ||
+        number < 0.0 || number > upper) {
+      fail(qualified(key), expected + ", got '" + (item.IsScalar() ? item.Scalar() : "<not a scalar>") + "'");
+    }
+    const auto value = static_cast<unsigned>(number);
+    for (const unsigned earlier : parsed) {
+      if (earlier == value) fail(qualified(key), expected + ", got " + item.Scalar() + " twice");
+    }
+    parsed.push_back(value);
+  }
+  values = parsed;
+}
+
 void SectionReader::text(const std::string& key, std::string& value, const std::set<std::string>& choices) const {
   if (!node_[key]) return;
   if (!node_[key].IsScalar()) fail(qualified(key), "must be a string");

@@ -7,6 +7,7 @@
 
 #include <set>
 #include <string>
+#include <vector>
 
 #include "loop/config_error.hpp"
 
@@ -25,6 +26,8 @@ class SectionReader {
   void number(const std::string& key, double& value, double lower, double upper) const;
   void flag(const std::string& key, bool& value) const;
   void unsigned_integer(const std::string& key, unsigned& value) const;
+  // a list of whole numbers in [0, upper], each at most once (for example CPUs)
+  void unsigned_list(const std::string& key, std::vector<unsigned>& values, unsigned upper) const;
   void text(const std::string& key, std::string& value, const std::set<std::string>& choices = {}) const;
   // a file's path: a string; an unquoted number or true/false (YAML's other plain scalars) is refused,
   // since no one means the file "42"

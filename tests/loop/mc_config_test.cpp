@@ -8,6 +8,7 @@
 
 #include <fstream>
 #include <string>
+#include <vector>
 
 namespace cerebellum {
 namespace {
@@ -85,6 +86,29 @@ TEST(McConfig, WrongTypeNamesTheExpectedType) {
   EXPECT_NE(load_error("mc: {startup: fly}\n").find("mc.startup must be one of: damper, off, stand; got 'fly'"),
             std::string::npos);
   EXPECT_NE(load_error("stand_up: {kd: .nan}\n").find("stand_up.kd must be in"), std::string::npos);
+}
+
+TEST(McConfig, TheRealtimeSectionIsReadAndEachBadValueNamedWithWhatIsAccepted) {
+  const std::string path = write_file("realtime.yaml", "realtime:\n  priority: 20\n  cpus: [1, 0]\n  lock_memory: true\n");
+  const McConfig config = load_config(path);
+  EXPECT_EQ(config.realtime.priority, 20);
+  EXPECT_EQ(config.realtime.cpus, (std::vector<unsigned>{1, 0}));
+  EXPECT_TRUE(config.realtime.lock_memory);
+  EXPECT_FALSE(load_config(write_file("none.yaml", "mc: {startup: off}\n")).realtime.any()) << "off unless asked";
+  EXPECT_NE(load_error("realtime: {priority: 100}\n").find("realtime.priority must be in [0, 99], got 100"),
+            std::string::npos);
+  EXPECT_NE(load_error("realtime: {priority: 2.5}\n").find("realtime.priority must be a whole number in [0, 99]"),
+            std::string::npos);
+  EXPECT_NE(load_error("realtime: {cpus: 1}\n").find("realtime.cpus must be a list of whole numbers in [0, 1023]"),
+            std::string::npos);
+  EXPECT_NE(load_error("realtime: {cpus: [1, one]}\n").find("got 'one'"), std::string::npos);
+  EXPECT_NE(load_error("realtime: {cpus: [-1]}\n").find("got '-1'"), std::string::npos);
+  EXPECT_NE(load_error("realtime: {cpus: [1, 1]}\n").find("got 1 twice"), std::string::npos);
+  EXPECT_NE(load_error("realtime: {lock_memory: please}\n").find("realtime.lock_memory must be true or false"),
+            std::string::npos);
+  EXPECT_NE(load_error("realtime: {nice: -5}\n").find("realtime.nice is not a known key (accepted: cpus, lock_memory, "
+                                                       "priority)"),
+            std::string::npos);
 }
 
 TEST(McConfig, BrokenYamlAndMissingFileAreReported) {
