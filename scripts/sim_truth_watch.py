@@ -6,7 +6,8 @@ for judging a client program on what the simulated robot really did, not on the 
 
 Runs until SIGINT / SIGTERM, or until no message arrived for --idle seconds after the first one
 (the simulation stopped), then prints one summary line and the final state as KEY=VALUE lines
-(final_x_m, final_y_m, final_height_m, final_tilt_deg, final_feet_down, lowest_height_m, largest_tilt_deg, messages).
+(final_x_m, final_y_m, final_height_m, final_tilt_deg, final_feet_down, lowest_height_m,
+highest_height_m, largest_tilt_deg, messages).
 """
 import argparse
 import math
@@ -65,6 +66,7 @@ def main():
         "final_tilt_deg": f"{tilt_deg(final.quaternion):.1f}",
         "final_feet_down": feet,
         "lowest_height_m": f"{min(m.position[2] for m in messages):.3f}",
+        "highest_height_m": f"{max(m.position[2] for m in messages):.3f}",
         "largest_tilt_deg": f"{max(tilt_deg(m.quaternion) for m in messages):.1f}",
     }
     print(f"sim_truth: {len(messages)} messages over {span_s:.2f} s of simulated time; final height "

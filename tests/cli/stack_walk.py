@@ -10,7 +10,6 @@ and damps within 50 ms of its own time (its log).
     PYTHONPATH=<generated python types> stack_walk.py CEREBELLUM VX
     (inside scripts/stack.sh: STACK_A_PID, STACK_B_LOG)
 """
-import math
 import os
 import re
 import signal
@@ -18,17 +17,8 @@ import subprocess
 import sys
 import time
 
-import lcm
-from robot_control_cmd_lcmt import robot_control_cmd_lcmt
-from robot_control_response_lcmt import robot_control_response_lcmt
-from sim_truth_lcmt import sim_truth_lcmt
+from stack_client import B_ODOMETRY_URL, StackClient, tilt_deg
 
-import heartbeat_spin
-
-CMD_URL = "udpm://239.255.76.67:7671?ttl=0"       # B's high-level interface
-RESPONSE_URL = "udpm://239.255.76.67:7670?ttl=0"
-TRUTH_URL = "udpm://239.255.76.67:7680?ttl=0"     # A's sim_truth (config/stack/sim.yaml)
-B_ODOMETRY_URL = "udpm://239.255.76.67:7672?ttl=0"  # where a simulation would take push and fault
 STAND_HEIGHT_M = (0.22, 0.30)
 FALLEN_TILT_DEG = 35.0
 FALLEN_HEIGHT_M = 0.15
@@ -38,52 +28,13 @@ SPEED_TOLERANCE = 0.15
 DAMP_WITHIN_MS = 50.0
 
 
-def tilt_deg(q):
-    w, x, y, z = q
-    return math.degrees(math.acos(max(-1.0, min(1.0, 1.0 - 2.0 * (x * x + y * y)))))
-
-
-def fail(text):
-    print("stack_walk: FAILED: " + text)
-    # what the two MCs said besides their once-a-second state lines: the link's events, refusals
-    for name in ("STACK_B_LOG", "STACK_A_LOG"):
-        if name in os.environ and os.path.exists(os.environ[name]):
-            with open(os.environ[name]) as log:
-                events = [line.rstrip() for line in log if not line.startswith(("t=", "    "))]
-            print("stack_walk: %s's events:\n  %s" % (name[6], "\n  ".join(events[-25:])))
-    sys.exit(1)
-
-
 def main():
     exe, vx = sys.argv[1], float(sys.argv[2])
-    commands = lcm.LCM(CMD_URL)
-    responses = lcm.LCM(RESPONSE_URL)
-    truth = lcm.LCM(TRUTH_URL)
-    seen = {"response": None, "truth": []}
-    responses.subscribe("robot_control_response",
-                        lambda _c, d: seen.__setitem__("response", robot_control_response_lcmt.decode(d)))
-    truth.subscribe("sim_truth", lambda _c, d: seen["truth"].append(sim_truth_lcmt.decode(d)))
-    msg = robot_control_cmd_lcmt()
-
-    def send(mode, gait):
-        msg.mode, msg.gait_id = mode, gait
-        msg.life_count = (msg.life_count + 1) % 128
-        commands.publish("robot_control_cmd", msg.encode())
-
-    def truth_s():
-        return seen["truth"][-1].timestamp * 1e-9 if seen["truth"] else 0.0
-
-    # wall time only bounds the waits (generous on a loaded machine); robot time judges
-    def spin(wall_limit_s, until):
-        return heartbeat_spin.spin(commands, msg, [responses, truth], wall_limit_s, until)
-
-    send(12, 0)
-    if not spin(60.0, lambda: seen["response"] is not None and seen["response"].mode == 12
-                and seen["response"].order_process_bar >= 95):
-        fail("B did not report the recovery stand done (mode 12, bar >= 95)")
-    stood_from = truth_s()
+    client = StackClient("stack_walk")
+    fail, send, spin, truth_s, msg = client.fail, client.send, client.spin, client.truth_s, client.msg
+    stood_from = client.stand()
     spin(30.0, lambda: truth_s() >= stood_from + 1.0)
-    standing = [t.position[2] for t in seen["truth"] if t.timestamp * 1e-9 >= stood_from]
+    standing = [t.position[2] for t in client.truth if t.timestamp * 1e-9 >= stood_from]
     height_m = sum(standing) / max(1, len(standing))
     print("stack_walk: standing on A's truth at %.3f m (over %d samples)" % (height_m, len(standing)))
     if not STAND_HEIGHT_M[0] <= height_m <= STAND_HEIGHT_M[1]:
@@ -95,7 +46,7 @@ def main():
     walk_from = truth_s()
     if not spin(90.0, lambda: truth_s() >= walk_from + WALK_S):
         fail("A's truth stopped during the walk (%.1f s of %.1f s)" % (truth_s() - walk_from, WALK_S))
-    walk = [t for t in seen["truth"] if t.timestamp * 1e-9 >= stood_from]
+    walk = [t for t in client.truth if t.timestamp * 1e-9 >= stood_from]
     worst_tilt = max(tilt_deg(t.quaternion) for t in walk)
     lowest = min(t.position[2] for t in walk)
     judged = [t for t in walk if t.timestamp * 1e-9 >= walk_from + WALK_S - JUDGED_LAST_S]

@@ -159,6 +159,21 @@ void LcmMotorSdkRobot::log_changes(const StatusAt& now) {
     std::snprintf(line, sizeof line, "link back at %.3f s robot time", now.robot_time_s);
     link_log_.line(wall_seconds(), line);
   }
+  if (is.jumped_states > was.jumped_states) {
+    std::snprintf(line, sizeof line,
+                  "spi_data refused at %.3f s robot time: a joint angle moved %.3f rad since the last state taken, "
+                  "more than a joint can (%llu refused so far)",
+                  now.robot_time_s, is.last_jump_rad, static_cast<unsigned long long>(is.jumped_states));
+    link_log_.line(wall_seconds(), line);
+  }
+  if (is.repeated_states > was.repeated_states) {
+    std::snprintf(line, sizeof line,
+                  "%llu states at %.3f s robot time repeated the one before in every value: not fresh "
+                  "(%llu so far)",
+                  static_cast<unsigned long long>(is.repeated_states - was.repeated_states), now.robot_time_s,
+                  static_cast<unsigned long long>(is.repeated_states));
+    link_log_.line(wall_seconds(), line);
+  }
   if (is.stopped && !was.stopped) {
     // once per run: never rate limited away
     std::fprintf(log_,
@@ -190,11 +205,11 @@ void LcmMotorSdkRobot::finish(std::FILE* out) {
   using ull = unsigned long long;
   std::fprintf(out,
                "cyberdog2: err_flag 0x%02x, %s; %llu link losses; %llu all-zero frames; frames clamped: %llu to "
-               "ranges, %llu position jumps; robot reported %llu late, %llu jumps; refused %llu malformed, %llu "
-               "non-finite, %llu dropped; %llu frames not sent (queue full)\n",
+               "ranges, %llu position jumps; robot reported %llu late, %llu jumps; states %llu repeated, %llu "
+               "jumped; refused %llu malformed, %llu non-finite, %llu dropped; %llu frames not sent (queue full)\n",
                static_cast<unsigned>(s.err_flag), s.stopped ? "stopped on a motor error" : "no motor error",
                ull(s.link_losses), ull(s.zero_frames), ull(s.range_clamps), ull(s.jump_clamps), ull(s.late_reports),
-               ull(s.jump_reports), ull(rejected_.malformed.load()), ull(rejected_.non_finite.load()),
+               ull(s.jump_reports), ull(s.repeated_states), ull(s.jumped_states), ull(rejected_.malformed.load()), ull(rejected_.non_finite.load()),
                ull(rejected_.dropped.load()), ull(frames_.dropped()));
   std::fflush(out);
 }

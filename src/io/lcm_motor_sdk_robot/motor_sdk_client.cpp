@@ -1,15 +1,57 @@
 #include "io/lcm_motor_sdk_robot/motor_sdk_client.hpp"
 
 #include <algorithm>
+#include <cmath>
 
+#include "core/robot_model.hpp"
 #include "lowlevel/motor_sdk/motor_sdk_frame_rules.hpp"
 #include "safety/damping_command.hpp"
 
 namespace cerebellum {
 
+namespace {
+
+// every value spi_data carries, as the frame holds the newest one taken
+bool same_values(const SpiJointState& a, const SensorFrame& b) {
+  return a.q == b.q && a.qd == b.qd && a.tau == b.tau && a.temperature_c == b.temperature_c &&
+         a.motor_faults == b.motor_faults;
+}
+
+}  // namespace
+
+double joint_step_limit_rad(double dt_s) {
+  return 2.0 * robot::kNoLoadSpeedRadS * std::max(dt_s, 0.0) + robot::deg(5.0);
+}
+
 MotorSdkClient::MotorSdkClient(const MotorSdkRobotConfig& config) : config_(config) {}
 
 void MotorSdkClient::take_joints(const SpiJointState& joints, double received_s) {
+  // the vendor's client stops for good on a motor error: a driver that tripped may hold a joint
+  // in a state no command of ours can be trusted against. Checked first: an error bit stops us
+  // even in a state refused below
+  if (!status_.stopped) {
+    std::uint32_t error_motors = 0;
+    for (std::size_t i = 0; i < kNumJoints; ++i) {
+      if (joints.motor_faults[i] & kMotorErrorBits) error_motors |= 1u << i;
+    }
+    if (error_motors != 0) {
+      status_.stopped = true;
+      status_.error_motors = error_motors;
+    }
+  }
+  if (have_joints_) {
+    if (same_values(joints, frame_)) {
+      ++status_.repeated_states;
+      return;
+    }
+    double step_rad = 0.0;
+    for (std::size_t i = 0; i < kNumJoints; ++i) step_rad = std::max(step_rad, std::abs(joints.q[i] - frame_.q[i]));
+    if (step_rad > joint_step_limit_rad(received_s - joints_received_s_)) {
+      ++status_.jumped_states;
+      status_.last_jump_rad = step_rad;
+      return;
+    }
+  }
   frame_.q = joints.q;
   frame_.qd = joints.qd;
   frame_.tau = joints.tau;
@@ -18,19 +60,14 @@ void MotorSdkClient::take_joints(const SpiJointState& joints, double received_s)
   frame_.driver_mode = joints.driver_mode;
   have_joints_ = true;
   joints_received_s_ = received_s;
-  // the vendor's client stops for good on a motor error: a driver that tripped may hold a joint
-  // in a state no command of ours can be trusted against
-  if (status_.stopped) return;
-  std::uint32_t error_motors = 0;
-  for (std::size_t i = 0; i < kNumJoints; ++i) {
-    if (joints.motor_faults[i] & kMotorErrorBits) error_motors |= 1u << i;
-  }
-  if (error_motors == 0) return;
-  status_.stopped = true;
-  status_.error_motors = error_motors;
 }
 
 void MotorSdkClient::take_imu(const ImuSample& imu, double received_s) {
+  if (have_imu_ && imu.quat == frame_.imu_quat && imu.gyro_rad_s == frame_.imu_gyro &&
+      imu.specific_force_m_s2 == frame_.imu_accel) {
+    ++status_.repeated_states;
+    return;
+  }
   frame_.imu_quat = imu.quat;
   frame_.imu_gyro = imu.gyro_rad_s;
   frame_.imu_accel = imu.specific_force_m_s2;

@@ -6,7 +6,12 @@
 // - the vendor's command ranges and position-jump steps applied before sending, counted;
 // - the link watch: no fresh spi_data or state_estimator for link_timeout_s -> every motor reads
 //   "disconnected" in the sensor frame, so the health monitor damps the legs (silence counted only
-//   over the receiver's listening window: listening_window.hpp).
+//   over the receiver's listening window: listening_window.hpp);
+// - a state that repeats or jumps: a spi_data or state_estimator equal in every value to the one
+//   before it is a stuck sender, not news, so it does not refresh the link (a stream that only
+//   repeats is lost after link_timeout_s); a spi_data whose angle moved further since the last one
+//   than a joint can (twice its no-load speed over the time between them, and 5 degrees) is
+//   refused, and the next ones are compared with the last one taken (a lasting jump is a lost link).
 #pragma once
 
 #include <cstdint>
@@ -33,7 +38,14 @@ struct MotorSdkClientStatus {
   std::uint64_t jump_clamps = 0;     // frames with a position step clamped to 8 / 10 / 12 degrees
   std::uint64_t late_reports = 0;    // motor_ctrl_state with bit 0 (our frames came late)
   std::uint64_t jump_reports = 0;    // motor_ctrl_state with a position-jump bit (the robot clamped)
+  std::uint64_t repeated_states = 0;  // spi_data or state_estimator equal to the one before: not fresh
+  std::uint64_t jumped_states = 0;    // spi_data refused: an angle moved further than a joint can
+  double last_jump_rad = 0.0;         // the largest angle step of the newest refused spi_data
 };
+
+// the largest step a joint's angle can make in dt_s: twice the no-load speed (a leg thrown by a
+// fall may be driven past it), plus 5 degrees of encoder and timing slack
+double joint_step_limit_rad(double dt_s);
 
 class MotorSdkClient {
  public:

@@ -39,6 +39,15 @@ bool all_zero(const JointCommand& frame) {
 // a receiver that has listened without a pause since since_s, its newest step at until_s
 ListeningWindow listened(double until_s, double since_s = 0.0) { return ListeningWindow{since_s, until_s}; }
 
+// a live robot's state at received_s: its values change with time, as a real one's noise makes
+// them (two equal states in a row are a stuck sender, not news)
+SpiJointState live_joints(double received_s) {
+  SpiJointState joints = lying_joints();
+  joints.qd[0] = received_s;
+  return joints;
+}
+ImuSample live_imu(double received_s) { return ImuSample{{1.0, 0.0, 0.0, 0.0}, {0.0, 0.0, received_s}, {0.0, 0.0, 9.81}}; }
+
 // the client with fresh joints and IMU at time now_s on the link's clock
 MotorSdkClient heard_client(double now_s = 0.0) {
   MotorSdkClient client{MotorSdkRobotConfig{}};
@@ -111,9 +120,9 @@ TEST(MotorSdkClient, ReportsEveryMotorDisconnectedWhenNoStateCameFor20Ms) {
   client.frame(listened(1.030), 5.004);
   EXPECT_EQ(client.status().link_losses, 1u) << "one loss, however long";
   // the IMU alone is not the link: spi_data must come too
-  client.take_imu(ImuSample{}, 1.031);
+  client.take_imu(live_imu(1.031), 1.031);
   EXPECT_TRUE(client.frame(listened(1.032), 5.006).motor_faults[0] & kMotorDisconnected);
-  client.take_joints(lying_joints(), 1.032);
+  client.take_joints(live_joints(1.032), 1.032);
   EXPECT_EQ(client.frame(listened(1.033), 5.008).motor_faults[0], kMotorOk) << "fresh state: the link is back";
 }
 
@@ -142,6 +151,68 @@ TEST(MotorSdkClient, AfterAStallOfTheWholeMachineTheLinkIsJudgedOnlyOnceTheRecei
   for (double step_s = 1.032; step_s < 1.052; step_s += 0.001) receiver.step(step_s);  // listening, nothing comes
   EXPECT_TRUE(client.frame(receiver.window(), 5.004).motor_faults[0] & kMotorDisconnected)
       << "over 20 ms of listening without a word: lost";
+}
+
+TEST(MotorSdkClient, AStreamThatOnlyRepeatsItsLastStateIsALostLinkAfterTheTimeout) {
+  MotorSdkClient client = heard_client(1.000);
+  // the robot's joints keep coming, but each equal to the one before in every value: a stuck sender
+  SpiJointState stuck = lying_joints();
+  for (double t_s = 1.002; t_s < 1.030; t_s += 0.002) {
+    client.take_joints(stuck, t_s);
+    client.take_imu(live_imu(t_s), t_s);  // the IMU lives
+  }
+  EXPECT_TRUE(client.frame(listened(1.030), 5.0).motor_faults[0] & kMotorDisconnected)
+      << "30 ms of repeated joints: no fresh joint state";
+  EXPECT_GE(client.status().repeated_states, 14u);
+  stuck.qd[2] = 1e-6;  // any value changed: news again (and, the link being lost, an IMU sample after it)
+  client.take_joints(stuck, 1.031);
+  client.take_imu(live_imu(1.031), 1.031);
+  EXPECT_EQ(client.frame(listened(1.031), 5.002).motor_faults[0], kMotorOk);
+  EXPECT_EQ(client.status().jumped_states, 0u);
+}
+
+TEST(MotorSdkClient, AnIdenticalImuStateIsNotFreshEither) {
+  MotorSdkClient client = heard_client(1.000);
+  for (double t_s = 1.002; t_s < 1.030; t_s += 0.002) {
+    client.take_joints(live_joints(t_s), t_s);
+    client.take_imu(ImuSample{}, t_s);  // the very sample heard_client gave, again and again
+  }
+  EXPECT_TRUE(client.frame(listened(1.030), 5.0).motor_faults[0] & kMotorDisconnected);
+}
+
+TEST(MotorSdkClient, AJointAngleThatJumpsFurtherThanAJointCanMoveIsRefusedUntilTheStateIsPlausibleAgain) {
+  MotorSdkClient client = heard_client(1.000);
+  SpiJointState jumped = lying_joints();
+  // 2 ms after the last state: a joint may move 2 x 30.5 rad/s x 2 ms + 5 deg = 0.209 rad
+  EXPECT_NEAR(joint_step_limit_rad(0.002), 2.0 * robot::kNoLoadSpeedRadS * 0.002 + robot::deg(5.0), 1e-12);
+  jumped.q[7] += 0.20;  // within
+  client.take_joints(jumped, 1.002);
+  EXPECT_EQ(client.status().jumped_states, 0u);
+  EXPECT_DOUBLE_EQ(client.frame(listened(1.002), 5.0).q[7], jumped.q[7]) << "taken";
+  jumped.q[4] += 3.0;  // an encoder that wrapped
+  client.take_joints(jumped, 1.004);
+  EXPECT_EQ(client.status().jumped_states, 1u);
+  EXPECT_NEAR(client.status().last_jump_rad, 3.0, 1e-12);
+  EXPECT_DOUBLE_EQ(client.frame(listened(1.004), 5.002).q[4], lying_joints().q[4]) << "refused: the old angle stays";
+  // the angle stays where it jumped to: compared with the last state taken, it keeps being refused
+  // until the link watch calls it lost
+  for (double t_s = 1.006; t_s < 1.026; t_s += 0.002) {
+    jumped.qd[0] = t_s;  // otherwise live
+    client.take_joints(jumped, t_s);
+  }
+  EXPECT_TRUE(client.frame(listened(1.026), 5.004).motor_faults[0] & kMotorDisconnected);
+  EXPECT_GE(client.status().jumped_states, 10u);
+}
+
+TEST(MotorSdkClient, AMotorErrorStopsTheClientEvenInAStateRefusedAsAJump) {
+  MotorSdkClient client = heard_client(1.000);
+  SpiJointState broken = lying_joints();
+  broken.q[1] += 2.0;
+  broken.motor_faults[1] = kMotorErrorBits & ~(kMotorErrorBits - 1);  // its lowest error bit
+  client.take_joints(broken, 1.002);
+  EXPECT_EQ(client.status().jumped_states, 1u);
+  EXPECT_TRUE(client.status().stopped);
+  EXPECT_EQ(client.status().error_motors, 1u << 1);
 }
 
 TEST(MotorSdkClient, ARobotNeverHeardIsALostLink) {
