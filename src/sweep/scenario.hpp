@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "backend/fault_injecting_backend.hpp"
+#include "backend/terrain.hpp"
 
 namespace cerebellum {
 
@@ -48,6 +49,8 @@ struct Scenario {
   std::string file;         // where it was read, for messages
   std::string config_path;  // the MC's configuration file (absolute or relative to the cwd); empty: defaults
   bool sensor_noise = false;  // the simulated sensors' noise, seeded by the run's seed
+  // the ground of every run (docs/terrain.md); unset: the configuration's robot.terrain
+  std::optional<TerrainSpec> terrain;
   unsigned seed = 1;          // the noise and the soak's draws
   double duration_s = 10.0;   // robot time of a run
   // > 0: the run ends this long after the last push has ended (duration_s is then unused)

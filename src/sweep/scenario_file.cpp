@@ -73,6 +73,21 @@ void read_robot(const YAML::Node& node, const std::string& name, const std::stri
   robot.flag("sensor_noise", s.sensor_noise);
 }
 
+// the terrain spec of `cerebellum sim --terrain`; a terrain file is found beside the scenario file
+TerrainSpec read_terrain(const SectionReader& top, const std::string& base_dir) {
+  std::string text;
+  top.text("terrain", text);
+  TerrainSpec terrain;
+  try {
+    terrain = parse_terrain_spec(text);
+  } catch (const std::invalid_argument& e) {
+    top.fail("terrain", e.what());
+  }
+  if (terrain.kind == TerrainKind::File && std::filesystem::path(terrain.file).is_relative() && !base_dir.empty())
+    terrain.file = (std::filesystem::path(base_dir) / terrain.file).lexically_normal().string();
+  return terrain;
+}
+
 std::vector<ScriptedCommand> read_commands(const SectionReader& top, const YAML::Node& list, const std::string& name,
                                            double duration_s) {
   check_list(top, list, "commands", "must be a list of commands with at_s, mode and optionally gait, vx_m_s, vy_m_s, yaw_rate_rad_s");
@@ -210,13 +225,11 @@ SweepSpec parse_scenario(const std::string& text, const std::string& name, const
                           {"robot", "seed", "duration_s", "end_after_last_push_s", "commands", "soak", "pushes",
                            "faults", "settle_speed_m_s", "sweep", "terrain"},
                           kKind);
-  // terrains are being added to the simulation; until a run can load one, a scenario naming a
-  // terrain would silently run on flat ground
-  if (top.has("terrain")) top.fail("terrain", "is not supported yet: sweeps run on the flat ground only");
   SweepSpec spec;
   Scenario& s = spec.base;
   s.file = name;
   if (top.has("robot")) read_robot(root["robot"], name, base_dir, s);
+  if (top.has("terrain")) s.terrain = read_terrain(top, base_dir);
   top.unsigned_integer("seed", s.seed);
   if (!top.has("duration_s") && !top.has("end_after_last_push_s"))
     top.fail("duration_s", "is missing: give duration_s (robot seconds of a run) or end_after_last_push_s");

@@ -148,6 +148,7 @@ void judge_run(const Scenario& s, RunResult& r) {
 
 McConfig scenario_config(const Scenario& s) {
   McConfig config = s.config_path.empty() ? default_config() : load_config(s.config_path);
+  if (s.terrain) config.robot.terrain = *s.terrain;
   if (s.sensor_noise) {
     config.robot.noise.enabled = true;
     config.robot.noise.seed = s.seed;

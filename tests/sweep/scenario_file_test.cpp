@@ -126,9 +126,20 @@ TEST(ScenarioFile, AMissingDurationIsRefused) {
   expect_refusal("commands: [{at_s: 0, mode: 12}]\n", "duration_s is missing");
 }
 
-TEST(ScenarioFile, ATerrainIsRefusedUntilSweepsCanLoadOne) {
-  expect_refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nterrain: stairs\n",
-                 "scenario s.yaml: terrain is not supported yet");
+TEST(ScenarioFile, ATerrainIsReadAsTheSimulationReadsItAndABadOneIsRefusedWithTheReason) {
+  const SweepSpec spec =
+      parse_scenario("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nterrain: stairs:0.05:0.28\n", "s.yaml", "");
+  ASSERT_TRUE(spec.base.terrain.has_value());
+  EXPECT_EQ(spec.base.terrain->kind, TerrainKind::Stairs);
+  EXPECT_DOUBLE_EQ(spec.base.terrain->stair_rise_m, 0.05);
+  EXPECT_DOUBLE_EQ(spec.base.terrain->stair_run_m, 0.28);
+  EXPECT_FALSE(parse_scenario("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\n", "s.yaml", "").base.terrain)
+      << "unset: the configuration's";
+  const SweepSpec file = parse_scenario("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nterrain: file:ground.yaml\n",
+                                        "/x/sweeps/s.yaml", "/x/sweeps");
+  EXPECT_EQ(file.base.terrain->file, "/x/sweeps/ground.yaml") << "beside the scenario file";
+  expect_refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nterrain: stairs\n", "scenario s.yaml: terrain ");
+  expect_refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nterrain: [flat]\n", "terrain must be a string");
 }
 
 TEST(ScenarioFile, ASoakWithHoldsTheWrongWayRoundIsRefused) {

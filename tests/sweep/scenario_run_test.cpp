@@ -30,6 +30,15 @@ TEST(ScenarioRun, TheSameCellGivesTheSameRowTwice) {
   EXPECT_EQ(first, second);
 }
 
+TEST(ScenarioRun, TheScenariosTerrainReplacesTheConfigurationsAndItsAbsenceKeepsIt) {
+  SweepSpec spec = parse_scenario(std::string(kStandAndShove) + "terrain: step:0.04\n", "s.yaml", "");
+  const McConfig stepped = scenario_config(cell_scenario(spec, 0));
+  EXPECT_EQ(stepped.robot.terrain.kind, TerrainKind::Step);
+  EXPECT_DOUBLE_EQ(stepped.robot.terrain.step_height_m, 0.04);
+  spec = parse_scenario(kStandAndShove, "s.yaml", "");
+  EXPECT_EQ(scenario_config(cell_scenario(spec, 0)).robot.terrain.kind, default_config().robot.terrain.kind);
+}
+
 TEST(ScenarioRun, StandingUnpushedEndsOkAndAHardShoveIsJudgedAFall) {
   const SweepSpec spec = parse_scenario(kStandAndShove, "s.yaml", "");
   const RunResult calm = run_scenario(cell_scenario(spec, 0));
