@@ -41,8 +41,19 @@ def axes_of(header, rows):
     return axes
 
 
+def is_number(text):
+    try:
+        float(text)
+        return True
+    except ValueError:
+        return False
+
+
 def plot_outcomes(rows, axis, out_dir):
-    values = sorted({r[axis] for r in rows}, key=float)
+    # numbers in their order; a terrain axis's specs (text) as the file listed them
+    values = list(dict.fromkeys(r[axis] for r in rows))
+    if all(is_number(v) for v in values):
+        values.sort(key=float)
     fig, ax = plt.subplots(figsize=(max(4, 0.6 * len(values) + 2), 3.5))
     bottom = [0] * len(values)
     for outcome in OUTCOMES:

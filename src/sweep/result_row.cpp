@@ -18,7 +18,8 @@ std::string decimal(double v, int places) {
 
 }  // namespace
 
-std::string axis_value(double v) {
+std::string axis_value(const Axis& axis, double v) {
+  if (axis.kind == AxisKind::Terrain) return axis.terrains.at(static_cast<std::size_t>(v)).text;
   char buffer[64];
   std::snprintf(buffer, sizeof buffer, "%.10g", v);
   return buffer;
@@ -38,7 +39,7 @@ std::string result_row(const SweepSpec& spec, std::uint64_t cell, const RunResul
   std::string row = std::to_string(cell);
   const std::vector<double> values = cell_values(spec, cell);
   for (std::size_t a = 0; a < values.size(); ++a)
-    if (spec.axes[a].kind != AxisKind::Seed) row += "," + axis_value(values[a]);
+    if (spec.axes[a].kind != AxisKind::Seed) row += "," + axis_value(spec.axes[a], values[a]);
   const Scenario s = cell_scenario(spec, cell);
   row += "," + std::to_string(s.seed) + "," + r.outcome + "," + decimal(r.robot_time_s, 3) + "," +
          std::to_string(r.ticks) + "," + std::to_string(r.commands) + "," + std::to_string(r.faults) + "," +

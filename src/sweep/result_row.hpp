@@ -11,8 +11,8 @@
 
 namespace cerebellum {
 
-// an axis's value as the file would write it
-std::string axis_value(double v);
+// an axis's value as the file would write it (a terrain axis: the spec, not its index)
+std::string axis_value(const Axis& axis, double v);
 
 // "cell,<axis>,...,seed,outcome,robot_time_s,..." (a seed axis is the seed column)
 std::string result_header(const SweepSpec& spec);

@@ -65,11 +65,12 @@ struct Scenario {
 };
 
 // what a sweep may vary, each a key of the file's `sweep:` mapping
-enum class AxisKind { Seed, Gait, PushImpulse, PushDirection, PushAt };
+enum class AxisKind { Seed, Gait, PushImpulse, PushDirection, PushAt, Terrain };
 struct Axis {
   AxisKind kind = AxisKind::Seed;
-  std::string name;  // as the file writes it: seed, gait, push_impulse_n_s, push_direction_deg, push_at_s
-  std::vector<double> values;
+  std::string name;  // as the file writes it: seed, gait, push_impulse_n_s, push_direction_deg, push_at_s, terrain
+  std::vector<double> values;  // terrain: the indices of terrains, so the grid counts every axis alike
+  std::vector<TerrainSpec> terrains;  // terrain: the grounds, in the file's order
 };
 
 struct SweepSpec {
@@ -78,6 +79,6 @@ struct SweepSpec {
 };
 
 // the axes' names as the file writes them, for messages and the results' columns
-const std::array<const char*, 5>& axis_names();
+const std::array<const char*, 6>& axis_names();
 
 }  // namespace cerebellum

@@ -172,7 +172,34 @@ std::vector<TimedFault> read_faults(const SectionReader& top, const YAML::Node& 
   return faults;
 }
 
-std::vector<Axis> read_axes(const YAML::Node& node, const std::string& name, const Scenario& s) {
+// the terrain axis: a list of terrain specs, each read as the scenario's own terrain: is
+void read_terrain_axis(const SectionReader& sweep, const YAML::Node& node, const std::string& base_dir, Axis& axis) {
+  const YAML::Node list = node[axis.name];
+  const std::string key = "sweep." + axis.name;
+  if (!list.IsSequence()) sweep.fail(key, "must be a list of terrain specs, e.g. [flat, slope:10, step:0.04]");
+  if (list.size() == 0) sweep.fail(key, "has no values; give at least one");
+  if (list.size() > kScenarioMaxListEntries)
+    sweep.fail(key, "has " + std::to_string(list.size()) + " values; at most " + std::to_string(kScenarioMaxListEntries));
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    const std::string where = indexed(key, i);
+    if (!list[i].IsScalar()) sweep.fail(where, "must be a terrain spec (a string)");
+    // the results are CSV with the spec in a column
+    if (list[i].Scalar().find(',') != std::string::npos) sweep.fail(where, "may not hold a comma (the results are CSV)");
+    TerrainSpec terrain;
+    try {
+      terrain = parse_terrain_spec(list[i].Scalar());
+    } catch (const std::invalid_argument& e) {
+      sweep.fail(where, e.what());
+    }
+    if (terrain.kind == TerrainKind::File && std::filesystem::path(terrain.file).is_relative() && !base_dir.empty())
+      terrain.file = (std::filesystem::path(base_dir) / terrain.file).lexically_normal().string();
+    axis.values.push_back(static_cast<double>(i));
+    axis.terrains.push_back(terrain);
+  }
+}
+
+std::vector<Axis> read_axes(const YAML::Node& node, const std::string& name, const std::string& base_dir,
+                            const Scenario& s) {
   const std::set<std::string> accepted(axis_names().begin(), axis_names().end());
   const SectionReader sweep(node, name, "sweep", accepted, kKind);
   std::vector<Axis> axes;
@@ -196,8 +223,11 @@ std::vector<Axis> read_axes(const YAML::Node& node, const std::string& name, con
       case AxisKind::PushImpulse: axis.values = number_list(sweep, node, "sweep", axis.name, 0, kMaxImpulseNs, false); break;
       case AxisKind::PushDirection: axis.values = number_list(sweep, node, "sweep", axis.name, -360, 360, false); break;
       case AxisKind::PushAt: axis.values = number_list(sweep, node, "sweep", axis.name, 0, kScenarioMaxDurationS, false); break;
+      case AxisKind::Terrain: read_terrain_axis(sweep, node, base_dir, axis); break;
     }
-    if (axis.kind >= AxisKind::PushImpulse && s.pushes.empty())
+    const bool push_axis = axis.kind == AxisKind::PushImpulse || axis.kind == AxisKind::PushDirection ||
+                           axis.kind == AxisKind::PushAt;
+    if (push_axis && s.pushes.empty())
       sweep.fail("sweep." + axis.name, "sets a field of every push, but the scenario has no pushes: list them under pushes:");
     axes.push_back(axis);
   }
@@ -207,9 +237,9 @@ std::vector<Axis> read_axes(const YAML::Node& node, const std::string& name, con
 
 }  // namespace
 
-const std::array<const char*, 5>& axis_names() {
-  static constexpr std::array<const char*, 5> kNames{"seed", "gait", "push_impulse_n_s", "push_direction_deg",
-                                                     "push_at_s"};
+const std::array<const char*, 6>& axis_names() {
+  static constexpr std::array<const char*, 6> kNames{"seed",           "gait",      "push_impulse_n_s",
+                                                     "push_direction_deg", "push_at_s", "terrain"};
   return kNames;
 }
 
@@ -244,7 +274,7 @@ SweepSpec parse_scenario(const std::string& text, const std::string& name, const
   if (top.has("end_after_last_push_s") && s.pushes.empty())
     top.fail("end_after_last_push_s", "needs pushes: to end after");
   if (top.has("faults")) s.faults = read_faults(top, root["faults"], name, latest_s);
-  if (top.has("sweep")) spec.axes = read_axes(root["sweep"], name, s);
+  if (top.has("sweep")) spec.axes = read_axes(root["sweep"], name, base_dir, s);
   return spec;
 }
 

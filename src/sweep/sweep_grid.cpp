@@ -51,6 +51,7 @@ Scenario cell_scenario(const SweepSpec& spec, std::uint64_t index) {
       case AxisKind::PushAt:
         for (ScenarioPush& p : s.pushes) p.at_s = v;
         break;
+      case AxisKind::Terrain: s.terrain = spec.axes[i].terrains.at(static_cast<std::size_t>(v)); break;
     }
   }
   return s;

@@ -106,7 +106,7 @@ SweepTally gather_sweep(const SweepSpec& spec, const SweepFolder& folder) {
       std::string values;
       const std::vector<double> v = cell_values(spec, cell);
       for (std::size_t a = 0; a < v.size(); ++a)
-        values += (values.empty() ? "" : ", ") + spec.axes[a].name + " " + axis_value(v[a]);
+        values += (values.empty() ? "" : ", ") + spec.axes[a].name + " " + axis_value(spec.axes[a], v[a]);
       failures += "| " + std::to_string(cell) + " | " + values + " | " + outcome + (note.empty() ? "" : " (" + note + ")") +
                   " | " + folder.log_path(cell) + " | `" + replay_command(folder, cell) + "` |\n";
     }
@@ -125,7 +125,7 @@ SweepTally gather_sweep(const SweepSpec& spec, const SweepFolder& folder) {
   for (std::size_t a = 0; a < spec.axes.size(); ++a) {
     md += outcome_header(spec.axes[a].name);
     for (std::size_t i = 0; i < spec.axes[a].values.size(); ++i) {
-      md += "| " + axis_value(spec.axes[a].values[i]) + " |" + counts_cells(by_value[a][i]) + "\n";
+      md += "| " + axis_value(spec.axes[a], spec.axes[a].values[i]) + " |" + counts_cells(by_value[a][i]) + "\n";
     }
     md += "\n";
   }

@@ -79,7 +79,7 @@ TEST(ScenarioFile, AnAxisWithNoValuesIsRefused) {
 TEST(ScenarioFile, AnUnknownAxisIsRefusedWithTheAxesThatExist) {
   expect_refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nsweep:\n  friction: [1]\n",
                  "sweep.friction is not a known key (accepted: gait, push_at_s, push_direction_deg, "
-                   "push_impulse_n_s, seed)");
+                   "push_impulse_n_s, seed, terrain)");
 }
 
 TEST(ScenarioFile, APushAxisWithoutPushesIsRefused) {
@@ -140,6 +140,16 @@ TEST(ScenarioFile, ATerrainIsReadAsTheSimulationReadsItAndABadOneIsRefusedWithTh
   EXPECT_EQ(file.base.terrain->file, "/x/sweeps/ground.yaml") << "beside the scenario file";
   expect_refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nterrain: stairs\n", "scenario s.yaml: terrain ");
   expect_refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nterrain: [flat]\n", "terrain must be a string");
+}
+
+TEST(ScenarioFile, ATerrainAxisRefusesABadSpecAndACommaNamingTheEntry) {
+  const std::string head = "duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nsweep:\n  terrain: ";
+  expect_refusal(head + "[flat, 'stairs:0.1']\n", "sweep.terrain[1] terrain 'stairs:0.1'");
+  expect_refusal(head + "['file:a,b.yaml']\n", "sweep.terrain[0] may not hold a comma");
+  expect_refusal(head + "[]\n", "sweep.terrain has no values");
+  expect_refusal(head + "flat\n", "sweep.terrain must be a list of terrain specs");
+  const SweepSpec spec = parse_scenario(head + "['file:ground.yaml']\n", "/x/s.yaml", "/x");
+  EXPECT_EQ(spec.axes[0].terrains[0].file, "/x/ground.yaml") << "beside the scenario file";
 }
 
 TEST(ScenarioFile, ASoakWithHoldsTheWrongWayRoundIsRefused) {

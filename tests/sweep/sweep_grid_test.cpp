@@ -6,6 +6,7 @@
 
 #include <set>
 
+#include "sweep/result_row.hpp"
 #include "sweep/scenario_file.hpp"
 
 namespace cerebellum {
@@ -46,6 +47,22 @@ TEST(SweepGrid, ACellsValuesAreAppliedToTheSeedEveryPushAndEveryWalkingCommand) 
     EXPECT_DOUBLE_EQ(p.impulse_n_s, 12.0);
     EXPECT_DOUBLE_EQ(p.at_s, 5.5);
   }
+}
+
+TEST(SweepGrid, ATerrainAxisGivesEachCellItsGroundAndTheResultsNameItsSpec) {
+  const SweepSpec spec = spec_of("  terrain: [flat, 'slope:10', 'step:0.04']\n  seed: [1, 2]\n");
+  ASSERT_EQ(grid_size(spec), 6u);
+  ASSERT_EQ(spec.axes[0].kind, AxisKind::Terrain);
+  // cell 3: the second terrain (the seed, last, varies fastest), seed 2
+  const Scenario cell = cell_scenario(spec, 3);
+  ASSERT_TRUE(cell.terrain.has_value());
+  EXPECT_EQ(cell.terrain->kind, TerrainKind::Slope);
+  EXPECT_DOUBLE_EQ(cell.terrain->slope_deg, 10.0);
+  EXPECT_EQ(cell.seed, 2u);
+  EXPECT_EQ(cell_scenario(spec, 5).terrain->kind, TerrainKind::Step);
+  EXPECT_EQ(axis_value(spec.axes[0], cell_values(spec, 3)[0]), "slope:10");
+  EXPECT_EQ(result_header(spec).rfind("cell,terrain,seed,", 0), 0u) << result_header(spec);
+  EXPECT_EQ(result_row(spec, 3, RunResult{}).rfind("3,slope:10,2,", 0), 0u) << result_row(spec, 3, RunResult{});
 }
 
 TEST(SweepGrid, ACellOutsideTheGridIsRefused) {
