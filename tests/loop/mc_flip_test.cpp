@@ -11,6 +11,7 @@
 
 #include "backend/sim_fixture.hpp"
 #include "loop/lockstep_client.hpp"
+#include "mc_fixture.hpp"
 #include "loop/simulated_robot.hpp"
 #include "modes/jump_mode.hpp"
 
@@ -18,9 +19,7 @@ namespace cerebellum {
 namespace {
 
 TEST(McFlips, ABackFlipFromAStandTurnsAFullTurnWithinTheMotorsLimitsAndStandsNearItsTakeOff) {
-  McConfig config = default_config();
-  config.startup = Startup::Off;
-  Mc mc = make_simulated_mc(config);
+  Mc mc = make_simulated_mc(testing::lying_start());
   LockstepClient client(mc);
   client.run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
   client.run(high_level_command(ModeId::Locomotion, 1), 1.0);
@@ -70,8 +69,7 @@ TEST(McFlips, AMalformedFlipFileStopsTheStartWithItsLineAndReason) {
 }
 
 TEST(McFlips, WithoutAFlipFileTheBackFlipIsRefused) {
-  McConfig config = default_config();
-  config.startup = Startup::Off;
+  McConfig config = testing::lying_start();
   config.back_flip_path = "";
   Mc mc = make_simulated_mc(config);
   LockstepClient client(mc);
