@@ -13,9 +13,13 @@ packages=(
   clang libclang-rt-14-dev
   slurm-wlm munge  # cerebellum sweep --slurm and its single-node test (tests/cli/slurm_single_node.sh)
 )
+# installed for this machine's architecture (or for all): a foreign-architecture copy (an arm64
+# -dev package of a cross build) does not count, and the native one is asked for by name
+native=$(dpkg --print-architecture)
 missing=()
 for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+  { dpkg-query -W -f='${Status} ${Architecture}\n' "$p" "$p:$native" 2>/dev/null || true; } |
+    grep -qE "^install ok installed ($native|all)$" || missing+=("$p:$native")
 done
 if ((${#missing[@]} == 0)); then
   echo "install_deps: all ${#packages[@]} packages present"

@@ -72,8 +72,8 @@ spi_data_t make_spi_data(const RobotState& state) {
   return message;
 }
 
-SpiJointState joint_state_from_spi_data(const spi_data_t& message) {
-  SpiJointState state;
+JointReading joint_state_from_spi_data(const spi_data_t& message) {
+  JointReading state;
   JointArray<double> q{}, qd{}, tau{};
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const std::size_t abad = joint_index(leg, 0), hip = joint_index(leg, 1), knee = joint_index(leg, 2);

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "core/robot_readings.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "io/lcm_common/lcm_packet.hpp"
@@ -28,17 +29,9 @@ WireDecode decode_motor_ctrl(const void* data, std::size_t size, JointCommand& s
 motor_ctrl_lcmt encode_motor_ctrl(const JointCommand& sdk_command);
 
 // what a robot's spi_data says, in the SDK convention (hip and knee flipped back), temperatures in
-// deg C, each flags word split into MotorFault bits and the driver's mode
-struct SpiJointState {
-  JointArray<double> q{};
-  JointArray<double> qd{};
-  JointArray<double> tau{};
-  JointArray<double> temperature_c{};
-  JointArray<std::uint32_t> motor_faults{};
-  JointArray<MotorDriverMode> driver_mode = all_motor_mode();
-};
-// the inverse of make_spi_data (the motor SDK robot backend reads the robot with it)
-SpiJointState joint_state_from_spi_data(const spi_data_t& message);
+// deg C, each flags word split into MotorFault bits and the driver's mode: the inverse of
+// make_spi_data (the motor SDK robot backend reads the robot with it)
+JointReading joint_state_from_spi_data(const spi_data_t& message);
 
 // spi_data.flags carry each motor's MotorFault bits as motor_error words (io/common)
 spi_data_t make_spi_data(const RobotState& state);

@@ -39,8 +39,8 @@ state_estimator_lcmt make_state_estimator(const RobotState& state) {
   return message;
 }
 
-ImuSample imu_from_state_estimator(const state_estimator_lcmt& message) {
-  ImuSample imu;
+ImuReading imu_from_state_estimator(const state_estimator_lcmt& message) {
+  ImuReading imu;
   for (std::size_t i = 0; i < 4; ++i) imu.quat[i] = message.quat[i];
   for (std::size_t i = 0; i < 3; ++i) {
     imu.gyro_rad_s[i] = message.omegaBody[i];

@@ -5,6 +5,7 @@
 #include <array>
 #include <cstdint>
 
+#include "core/robot_readings.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "leg_control_data_lcmt.hpp"
@@ -22,12 +23,7 @@ state_estimator_lcmt make_state_estimator(const RobotState& state);
 
 // the IMU as a robot's state_estimator carries it: quat (w, x, y, z), omegaBody (rad/s), aBody
 // (the specific force, body frame, m/s^2): what the motor SDK robot backend reads as its IMU
-struct ImuSample {
-  std::array<double, 4> quat{1.0, 0.0, 0.0, 0.0};
-  std::array<double, 3> gyro_rad_s{};
-  std::array<double, 3> specific_force_m_s2{};
-};
-ImuSample imu_from_state_estimator(const state_estimator_lcmt& message);
+ImuReading imu_from_state_estimator(const state_estimator_lcmt& message);
 
 // q, qd, tau_est in wire convention; p, v = foot position and velocity in the hip frame;
 // force_est = J^-T tau (the force the foot pushes with; the ground's reaction is its negative);

@@ -17,7 +17,7 @@
 #include "io/common/count.hpp"
 #include "io/common/count_report.hpp"
 #include "io/common/rate_limited_log.hpp"
-#include "io/lcm_motor_sdk_robot/listening_window.hpp"
+#include "io/robot_link/listening_window.hpp"
 #include "io/lcm_motor_sdk_robot/motor_sdk_client.hpp"
 #include "motor_ctrl_lcmt.hpp"
 
@@ -58,11 +58,11 @@ class LcmMotorSdkRobot final : public RobotBackend {
 
  private:
   struct Joints {
-    SpiJointState state;
+    JointReading state;
     double received_s = 0.0;
   };
   struct Imu {
-    ImuSample sample;
+    ImuReading sample;
     double received_s = 0.0;
   };
   struct StatusAt {

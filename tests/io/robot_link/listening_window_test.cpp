@@ -1,5 +1,5 @@
 // The receiver's listening window: a gap between its steps longer than the pause starts it again.
-#include "io/lcm_motor_sdk_robot/listening_window.hpp"
+#include "io/robot_link/listening_window.hpp"
 
 #include <gtest/gtest.h>
 

@@ -1,0 +1,28 @@
+// What a real robot's low-level interface reports, each part as it arrives on its own (the joints
+// in one message, the IMU in another), before a link watch makes a SensorFrame of them
+// (io/robot_link/robot_state_watch.hpp). SDK joint convention.
+#pragma once
+
+#include <array>
+#include <cstdint>
+
+#include "core/types.hpp"
+
+namespace cerebellum {
+
+struct JointReading {
+  JointArray<double> q{};
+  JointArray<double> qd{};
+  JointArray<double> tau{};
+  JointArray<double> temperature_c{};
+  JointArray<std::uint32_t> motor_faults{};
+  JointArray<MotorDriverMode> driver_mode = all_motor_mode();
+};
+
+struct ImuReading {
+  std::array<double, 4> quat{1.0, 0.0, 0.0, 0.0};  // w, x, y, z, body to world
+  std::array<double, 3> gyro_rad_s{};              // body frame
+  std::array<double, 3> specific_force_m_s2{};     // body frame, +9.81 on z at rest
+};
+
+}  // namespace cerebellum
