@@ -11,6 +11,7 @@
 #include "cli/served_endpoints.hpp"
 #include "cli/stop_signal.hpp"
 #include "io/lcm_motor_sdk_robot/lcm_motor_sdk_robot.hpp"
+#include "io/shm_lowlevel_robot/shm_lowlevel_robot.hpp"
 #include "io/lcm_sim_control/sim_control_adapter.hpp"
 #include "loop/mc.hpp"
 #include "loop/mc_config.hpp"
@@ -21,6 +22,12 @@ namespace {
 
 // the loop in real time: a robot does not wait for the controller
 constexpr double kRealTime = 1.0;
+
+// the robot the configuration names, through its vendor's low-level interface
+std::unique_ptr<HardwareBackend> make_robot(const McConfig& config) {
+  if (config.robot_kind == RobotKind::ZsibotShm) return std::make_unique<ShmLowLevelRobot>(config.shm_robot, stderr);
+  return std::make_unique<LcmMotorSdkRobot>(config.motor_sdk_robot, stderr);
+}
 
 }  // namespace
 
@@ -49,8 +56,8 @@ int run_run_command(const std::vector<std::string>& args) {
   for (const std::string& line : apply_realtime(config.realtime).lines) std::printf("%s\n", line.c_str());
   StopSignal stop_signal;
   try {
-    auto backend = std::make_unique<LcmMotorSdkRobot>(config.motor_sdk_robot, stderr);
-    LcmMotorSdkRobot& robot = *backend;
+    std::unique_ptr<HardwareBackend> backend = make_robot(config);
+    HardwareBackend& robot = *backend;
     Mc mc(config, McRobot{std::move(backend), nullptr, nullptr});
     ConsoleReporter reporter(stdout);
     mc.loop().add_observer(reporter);
@@ -62,22 +69,16 @@ int run_run_command(const std::vector<std::string>& args) {
       sim_refusals.emplace(nullptr, nullptr, nullptr, config.highlevel.odometry_url, stderr);
     }
 
-    std::printf("cerebellum run: activating the CyberDog2's motor mode on %s (all-zero frames, up to %g s)\n",
-                config.motor_sdk_robot.control_url.c_str(), config.motor_sdk_robot.activation_timeout_s);
+    std::printf("cerebellum run: activating %s\n", robot.activation_text().c_str());
     std::fflush(stdout);
     if (!robot.activate(stop_signal.flag())) {
       robot.finish(stderr);
-      std::fprintf(stderr,
-                   "cerebellum run: the robot did not take our frames within %g s: no spi_data, state_estimator or "
-                   "motor_ctrl_state without err_flag bit 1 on %s / %s (is the vendor's MC in motor mode, on this "
-                   "network?)\n",
-                   config.motor_sdk_robot.activation_timeout_s, config.motor_sdk_robot.control_url.c_str(),
-                   config.motor_sdk_robot.estimator_url.c_str());
+      std::fprintf(stderr, "cerebellum run: %s\n", robot.activation_failure().c_str());
       return 1;
     }
     std::printf("cerebellum startup %s: %s\n", startup_name(config.startup), startup_meaning(config.startup));
-    std::printf("cerebellum ready: CyberDog2 through its motor SDK (%s), %.0f Hz loop, real time; serving %s\n",
-                config.motor_sdk_robot.control_url.c_str(), 1.0 / config.loop_period_s,
+    std::printf("cerebellum ready: %s, %.0f Hz loop, real time; serving %s\n", robot.description().c_str(),
+                1.0 / config.loop_period_s,
                 served_endpoints(config).c_str());
     std::fflush(stdout);
     const RunStats stats = mc.loop().run({options.duration_s, kRealTime}, stop_signal.flag());

@@ -13,6 +13,7 @@
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
 #include "io/lcm_motor_sdk_robot/motor_sdk_robot_config.hpp"
+#include "io/shm_lowlevel_robot/shm_robot_config.hpp"
 #include "io/lcm_sim_control/sim_control_config.hpp"
 #include "io/lcm_sim_truth/sim_truth_config.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
@@ -42,6 +43,7 @@ struct McConfig {
   RobotKind robot_kind = RobotKind::Sim;  // robot.kind
   MujocoBackendConfig robot;               // the simulation (and the model every kind reads)
   MotorSdkRobotConfig motor_sdk_robot;     // robot.cyberdog2_motor_sdk: the CyberDog2's motor SDK link
+  ShmRobotConfig shm_robot;                // robot.zsibot_shm: the ZsiBot daemon's shared memory
   double loop_period_s = 0.002;
   RealtimeConfig realtime;  // the process's scheduling, memory locking and CPUs
   StandUpConfig stand_up = default_stand_up_config();

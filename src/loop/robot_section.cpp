@@ -1,12 +1,14 @@
 #include "loop/robot_section.hpp"
 
 #include <filesystem>
+#include <iterator>
 #include <set>
 #include <stdexcept>
 #include <utility>
 #include <vector>
 
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
+#include "io/shm_lowlevel/shm_lowlevel_config.hpp"
 #include "loop/yaml_section.hpp"
 
 namespace cerebellum {
@@ -15,6 +17,7 @@ namespace {
 namespace fs = std::filesystem;
 
 constexpr const char* kMotorSdkSection = "cyberdog2_motor_sdk";
+constexpr const char* kShmSection = "zsibot_shm";
 // the simulation's own keys: a real robot has no model to load nor a pose to start in
 const std::set<std::string> kSimulationKeys{"initial_pose", "initial_height_m", "sensor_noise", "seed", "terrain"};
 
@@ -58,6 +61,21 @@ void read_motor_sdk_robot(const YAML::Node& node, const std::string& path, Motor
   section.flag("position_jump_limit", robot.rules.position_mutation_limit);
 }
 
+void read_shm_robot(const YAML::Node& node, const std::string& path, ShmRobotConfig& robot) {
+  const std::string name = std::string("robot.") + kShmSection;
+  const SectionReader section(node, path, name,
+                              {"name_prefix", "link_timeout_s", "activation_timeout_s", "motor_error_damping_kd"});
+  section.text("name_prefix", robot.name_prefix);
+  if (const std::string problem = shm_name_prefix_problem(robot.name_prefix); !problem.empty()) {
+    section.fail(name + ".name_prefix", problem + ", got '" + robot.name_prefix + "'");
+  }
+  // below 3 ms two of the daemon's 1 ms updates may be missed in a healthy link; above 0.5 s the
+  // legs would hang on a dead daemon far too long (the vendor's own rule lies the robot down after 3 s)
+  section.number("link_timeout_s", robot.link_timeout_s, 0.003, 0.5);
+  section.number("activation_timeout_s", robot.activation_timeout_s, 1.0, 120.0);
+  section.number("motor_error_damping_kd", robot.motor_error_damping_kd, 0.5, robot::kCommandKdMax);
+}
+
 // "239.255.76.67:7667" of "udpm://239.255.76.67:7667?ttl=0": where packets meet, whatever the ttl
 std::string lcm_endpoint(const std::string& url) {
   const std::size_t start = url.find("://");
@@ -71,13 +89,12 @@ void read_robot_section(const YAML::Node& node, const std::string& path, const s
                         McConfig& config) {
   const SectionReader section(node, path, "robot",
                               {"kind", "model", "initial_pose", "initial_height_m", "sensor_noise", "seed",
-                               "terrain", kMotorSdkSection});
+                               "terrain", kMotorSdkSection, kShmSection});
   std::string kind = robot_kind_name(config.robot_kind);
-  section.text("kind", kind, {"sim", "cyberdog2_motor_sdk", "zsibot_shm"});
-  if (kind == "zsibot_shm") {
-    section.fail("robot.kind", "zsibot_shm is not built yet (issue 42); accepted now: sim, cyberdog2_motor_sdk");
+  section.text("kind", kind, std::set<std::string>(std::begin(kRobotKindNames), std::end(kRobotKindNames)));
+  for (int k = 0; k < static_cast<int>(std::size(kRobotKindNames)); ++k) {
+    if (kind == kRobotKindNames[k]) config.robot_kind = static_cast<RobotKind>(k);
   }
-  config.robot_kind = kind == "sim" ? RobotKind::Sim : RobotKind::Cyberdog2MotorSdk;
   // the model serves every kind: the two-leg stand designs its balance on it
   std::string model;
   section.path("model", model);
@@ -86,11 +103,15 @@ void read_robot_section(const YAML::Node& node, const std::string& path, const s
     config.robot.model_path =
         (model_path.is_absolute() ? model_path : fs::path(base_dir) / model_path).lexically_normal().string();
   }
-  if (config.robot_kind == RobotKind::Sim) {
-    if (section.has(kMotorSdkSection)) {
-      section.fail(std::string("robot.") + kMotorSdkSection,
-                   "applies only to robot.kind cyberdog2_motor_sdk (robot.kind is sim)");
+  // each robot's own subsection only with its kind
+  for (const auto& [subsection, owner] : {std::pair{kMotorSdkSection, RobotKind::Cyberdog2MotorSdk},
+                                          std::pair{kShmSection, RobotKind::ZsibotShm}}) {
+    if (section.has(subsection) && config.robot_kind != owner) {
+      section.fail(std::string("robot.") + subsection, std::string("applies only to robot.kind ") +
+                                                           robot_kind_name(owner) + " (robot.kind is " + kind + ")");
     }
+  }
+  if (config.robot_kind == RobotKind::Sim) {
     read_simulation(section, base_dir, config.robot);
     return;
   }
@@ -100,6 +121,7 @@ void read_robot_section(const YAML::Node& node, const std::string& path, const s
     }
   }
   if (section.has(kMotorSdkSection)) read_motor_sdk_robot(node[kMotorSdkSection], path, config.motor_sdk_robot);
+  if (section.has(kShmSection)) read_shm_robot(node[kShmSection], path, config.shm_robot);
 }
 
 void check_robot_fits(const YAML::Node& root, const std::string& path, McConfig& config) {
@@ -118,6 +140,15 @@ void check_robot_fits(const YAML::Node& root, const std::string& path, McConfig&
            "must be false on a real robot: push and fault act only on a simulation (robot.kind is " + kind + ")");
   }
   config.sim_command.enabled = false;
+  // the shared memory this MC would serve is the daemon's it reads, when both have one name
+  if (config.robot_kind == RobotKind::ZsibotShm) {
+    if (config.shm.enabled && config.shm.name_prefix == config.shm_robot.name_prefix) {
+      refuse("shm.enabled", "would serve " + shm_spline_object_name(config.shm.name_prefix) +
+                                ", the robot's own daemon's object (robot." + kShmSection +
+                                ".name_prefix): turn shm off or give it another name_prefix");
+    }
+    return;
+  }
   // a served interface on the robot's own link would read its own frames as the robot's (or the
   // robot would read ours): each served url needs another port than the robot's two
   const MotorSdkRobotConfig& link = config.motor_sdk_robot;

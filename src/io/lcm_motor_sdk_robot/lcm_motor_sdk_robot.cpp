@@ -10,6 +10,7 @@
 #include "io/lcm_common/lcm_url.hpp"
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
 #include "io/lcm_motor_sdk/robot_state_messages.hpp"
+#include "io/robot_link/robot_link_log.hpp"
 
 namespace cerebellum {
 namespace {
@@ -23,6 +24,7 @@ constexpr double kClientPeriodS = 0.002;
 constexpr double kListeningPauseS = 0.005;
 // link events (lost, back) a flapping link can provoke: a few per second, the rest summed up
 constexpr int kLinkLinesPerSecond = 4;
+constexpr RobotLinkWords kLinkWords{"cyberdog2", "spi_data or state_estimator", "spi_data"};
 
 template <typename Number, std::size_t N>
 bool all_finite(const Number (&values)[N]) {
@@ -104,6 +106,26 @@ bool LcmMotorSdkRobot::activate(const std::atomic<bool>& stop) {
   return false;
 }
 
+std::string LcmMotorSdkRobot::activation_text() const {
+  char text[320];
+  std::snprintf(text, sizeof text, "the CyberDog2's motor mode on %s (all-zero frames, up to %g s)",
+                config_.control_url.c_str(), config_.activation_timeout_s);
+  return text;
+}
+
+std::string LcmMotorSdkRobot::activation_failure() const {
+  char text[512];
+  std::snprintf(text, sizeof text,
+                "the robot did not take our frames within %g s: no spi_data, state_estimator or motor_ctrl_state "
+                "without err_flag bit 1 on %s / %s (is the vendor's MC in motor mode, on this network?)",
+                config_.activation_timeout_s, config_.control_url.c_str(), config_.estimator_url.c_str());
+  return text;
+}
+
+std::string LcmMotorSdkRobot::description() const {
+  return "CyberDog2 through its motor SDK (" + config_.control_url + ")";
+}
+
 void LcmMotorSdkRobot::step() {
   listening_.step(wall_seconds());
   handle_pending(*control_lcm_, 1);
@@ -148,40 +170,7 @@ void LcmMotorSdkRobot::log_changes(const StatusAt& now) {
                   static_cast<unsigned>(is.err_flag), now.robot_time_s);
     link_log_.line(wall_seconds(), line);
   }
-  if (is.link_losses > was.link_losses) {
-    std::snprintf(line, sizeof line,
-                  "link lost at %.3f s robot time: no spi_data or state_estimator for %.1f ms (limit %.1f ms); "
-                  "damping the legs (loss %llu)",
-                  now.robot_time_s, is.link_silent_s * 1e3, config_.link_timeout_s * 1e3,
-                  static_cast<unsigned long long>(is.link_losses));
-    link_log_.line(wall_seconds(), line);
-  } else if (was.link_lost && !is.link_lost && was.link_losses > 0) {
-    std::snprintf(line, sizeof line, "link back at %.3f s robot time", now.robot_time_s);
-    link_log_.line(wall_seconds(), line);
-  }
-  if (is.jumped_states > was.jumped_states) {
-    std::snprintf(line, sizeof line,
-                  "spi_data refused at %.3f s robot time: a joint angle moved %.3f rad since the last state taken, "
-                  "more than a joint can (%llu refused so far)",
-                  now.robot_time_s, is.last_jump_rad, static_cast<unsigned long long>(is.jumped_states));
-    link_log_.line(wall_seconds(), line);
-  }
-  if (is.repeated_states > was.repeated_states) {
-    std::snprintf(line, sizeof line,
-                  "%llu states at %.3f s robot time repeated the one before in every value: not fresh "
-                  "(%llu so far)",
-                  static_cast<unsigned long long>(is.repeated_states - was.repeated_states), now.robot_time_s,
-                  static_cast<unsigned long long>(is.repeated_states));
-    link_log_.line(wall_seconds(), line);
-  }
-  if (is.stopped && !was.stopped) {
-    // once per run: never rate limited away
-    std::fprintf(log_,
-                 "cyberdog2: motor error (motors 0x%03x) at %.3f s robot time: commanding stopped, damping frames "
-                 "until restart\n",
-                 static_cast<unsigned>(is.error_motors), now.robot_time_s);
-  }
-  link_log_.tick(wall_seconds());
+  log_link_changes(was, is, now.robot_time_s, config_.link_timeout_s, kLinkWords, wall_seconds(), link_log_, log_);
   logged_ = now;
   std::fflush(log_);
 }

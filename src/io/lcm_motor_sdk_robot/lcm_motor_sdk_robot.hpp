@@ -11,7 +11,7 @@
 #include <memory>
 #include <string>
 
-#include "backend/robot_backend.hpp"
+#include "backend/hardware_backend.hpp"
 #include "core/spsc_ring.hpp"
 #include "io/common/adapter_thread.hpp"
 #include "io/common/count.hpp"
@@ -35,7 +35,7 @@ struct MotorSdkRobotRejections {
   Count dropped;     // the loop had not taken the previous ones (it stopped or stalls)
 };
 
-class LcmMotorSdkRobot final : public RobotBackend {
+class LcmMotorSdkRobot final : public HardwareBackend {
  public:
   // opens both urls and starts the thread; throws std::runtime_error naming a url LCM cannot
   // open. log: where the link's events go (written by the backend's thread only)
@@ -49,11 +49,14 @@ class LcmMotorSdkRobot final : public RobotBackend {
   void advance(double period_s) override { robot_time_s_ += period_s; }
   double time_s() const override { return robot_time_s_; }
 
-  // before the loop, on the loop's thread: all-zero frames at 500 Hz until the robot answers in
-  // motor mode without err_flag bit 1; false when config.activation_timeout_s passes or stop is set
-  bool activate(const std::atomic<bool>& stop);
+  // HardwareBackend. activate: all-zero frames at 500 Hz until the robot answers in motor mode
+  // without err_flag bit 1; false when config.activation_timeout_s passes or stop is set
+  bool activate(const std::atomic<bool>& stop) override;
+  std::string activation_text() const override;
+  std::string activation_failure() const override;
+  std::string description() const override;
   // stops the thread and prints one summary line
-  void finish(std::FILE* out);
+  void finish(std::FILE* out) override;
   MotorSdkRobotRejections rejections() const { return rejected_; }
 
  private:

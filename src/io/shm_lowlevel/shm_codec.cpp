@@ -14,6 +14,22 @@ joint_state_t& joint_in(leg_state_t& leg, std::size_t joint) {
   }
 }
 
+const joint_state_t& joint_in(const leg_state_t& leg, std::size_t joint) {
+  switch (joint) {
+    case 0: return leg.abad;
+    case 1: return leg.hip;
+    default: return leg.knee;
+  }
+}
+
+joint_control_t& joint_in(leg_control_t& leg, std::size_t joint) {
+  switch (joint) {
+    case 0: return leg.abad;
+    case 1: return leg.hip;
+    default: return leg.knee;
+  }
+}
+
 const joint_control_t& joint_in(const leg_control_t& leg, std::size_t joint) {
   switch (joint) {
     case 0: return leg.abad;
@@ -89,6 +105,69 @@ JointCommand decode_shm_command(const leg_control_t (&legs)[kNumLegs]) {
     }
   }
   return command;
+}
+
+MotorDriverMode shm_driver_mode(std::int32_t flags) {
+  return (static_cast<std::uint32_t>(flags) & JOINT_STATE_ENABLED) ? MotorDriverMode::Motor : MotorDriverMode::Reset;
+}
+
+std::uint32_t shm_motor_faults(std::int32_t flags) {
+  const auto bits = static_cast<std::uint32_t>(flags);
+  std::uint32_t faults = kMotorOk;
+  if (bits & JOINT_STATE_OVER_VOLTAGE) faults |= kMotorOverVoltage;
+  if (bits & JOINT_STATE_OVER_CURRENT) faults |= kMotorOverCurrentAnyPhase;
+  if (bits & JOINT_STATE_OVER_TEMPERATURE) faults |= kMotorOverTemperature;
+  if (bits & JOINT_STATE_OVER_SPEED) faults |= kMotorOverSpeed;
+  if (bits & JOINT_STATE_ENCODER_FAULT) faults |= kMotorEncoderLost;
+  return faults;
+}
+
+double shm_temperature_c(std::int32_t flags) {
+  return static_cast<double>((static_cast<std::uint32_t>(flags) >> JOINT_STATE_TEMPERATURE_SHIFT) & 0xffu) -
+         JOINT_STATE_TEMPERATURE_OFFSET_C;
+}
+
+JointReading decode_shm_legs(const leg_state_t (&legs)[kNumLegs]) {
+  JointReading reading;
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    for (std::size_t joint = 0; joint < kJointsPerLeg; ++joint) {
+      const std::size_t i = joint_index(leg, joint);
+      const joint_state_t& in = joint_in(legs[leg], joint);
+      reading.q[i] = in.p;
+      reading.qd[i] = in.v;
+      reading.tau[i] = in.t;
+      reading.temperature_c[i] = shm_temperature_c(in.flags);
+      reading.motor_faults[i] = shm_motor_faults(in.flags);
+      reading.driver_mode[i] = shm_driver_mode(in.flags);
+    }
+  }
+  return reading;
+}
+
+ImuReading decode_shm_imu(const nav_imu_t& imu) {
+  ImuReading reading;
+  for (std::size_t k = 0; k < 3; ++k) {
+    reading.specific_force_m_s2[k] = imu.acc[k];
+    reading.gyro_rad_s[k] = imu.gyro[k];
+  }
+  for (std::size_t k = 0; k < 4; ++k) reading.quat[k] = imu.q[k];
+  return reading;
+}
+
+void encode_shm_command(const JointCommand& command, leg_control_t (&legs)[kNumLegs]) {
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    legs[leg].foot = joint_control_t{};
+    legs[leg].flags = 1;
+    for (std::size_t joint = 0; joint < kJointsPerLeg; ++joint) {
+      const std::size_t i = joint_index(leg, joint);
+      joint_control_t& out = joint_in(legs[leg], joint);
+      out.p_des = static_cast<float>(command.q_des[i]);
+      out.v_des = static_cast<float>(command.qd_des[i]);
+      out.kp = static_cast<float>(command.kp[i]);
+      out.kd = static_cast<float>(command.kd[i]);
+      out.t_ff = static_cast<float>(command.tau_ff[i]);
+    }
+  }
 }
 
 }  // namespace cerebellum

@@ -5,6 +5,7 @@
 #include <cstddef>
 #include <cstdint>
 
+#include "core/robot_readings.hpp"
 #include "core/types.hpp"
 #include "lowlevel/lowlevel.h"
 
@@ -31,5 +32,19 @@ std::uint64_t shm_timestamp_ns(double time_s);
 // not read): whether the motors may run it is the source's decision
 // (lowlevel/shm/shm_command_rules.hpp), not the translation's
 JointCommand decode_shm_command(const leg_control_t (&legs)[kNumLegs]);
+
+// the client's side (the MC driving a ZsiBot through its daemon, io/shm_lowlevel_robot): the
+// inverses of the daemon's encoders. The joints from state.legs: temperature from bits 8..15,
+// each fault bit lowlevel.h names as its MotorFault (an over-current as every phase: the header
+// does not name the phase), a motor not enabled as a driver in reset. A fault the header has no
+// bit for shows only as "not enabled" and cannot be told from a motor the daemon keeps off.
+JointReading decode_shm_legs(const leg_state_t (&legs)[kNumLegs]);
+MotorDriverMode shm_driver_mode(std::int32_t flags);
+std::uint32_t shm_motor_faults(std::int32_t flags);
+double shm_temperature_c(std::int32_t flags);
+// the IMU as nav_imu_t carries it (acc is the specific force, +9.81 on z at rest)
+ImuReading decode_shm_imu(const nav_imu_t& imu);
+// a command frame as a client writes cmd.legs: each leg's flags 1, the foot joint zero
+void encode_shm_command(const JointCommand& command, leg_control_t (&legs)[kNumLegs]);
 
 }  // namespace cerebellum

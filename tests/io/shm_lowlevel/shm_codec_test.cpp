@@ -150,5 +150,87 @@ TEST(ShmCodec, EveryValueArrivesAsTheClientWroteIt) {
   EXPECT_EQ(command.tau_ff[joint_index(Leg::RL, Joint::Abad)], std::numeric_limits<double>::infinity());
 }
 
+// the client's side (a ZsiBot driven through its daemon): the flags word read bit by bit as
+// lowlevel.h lays it out, written here by hand, not by the encoder
+TEST(ShmCodec, AClientReadsTheFlagsWordsTemperatureFaultsAndEnableAsTheHeaderLaysThemOut) {
+  const std::int32_t enabled_at_55c = static_cast<std::int32_t>((95u << 8) | (24u << 16) | 1u);
+  EXPECT_DOUBLE_EQ(shm_temperature_c(enabled_at_55c), 55.0);
+  EXPECT_EQ(shm_motor_faults(enabled_at_55c), kMotorOk);
+  EXPECT_EQ(shm_driver_mode(enabled_at_55c), MotorDriverMode::Motor);
+  const std::int32_t hot_and_off = static_cast<std::int32_t>((0u << 8) | (1u << 3));
+  EXPECT_DOUBLE_EQ(shm_temperature_c(hot_and_off), -40.0);
+  EXPECT_EQ(shm_motor_faults(hot_and_off), kMotorOverTemperature);
+  EXPECT_EQ(shm_driver_mode(hot_and_off), MotorDriverMode::Reset);
+  EXPECT_EQ(shm_motor_faults(1 << 1), kMotorOverVoltage);
+  EXPECT_EQ(shm_motor_faults(1 << 2), kMotorOverCurrentAnyPhase) << "the header does not name the phase";
+  EXPECT_EQ(shm_motor_faults(1 << 4), kMotorOverSpeed);
+  EXPECT_EQ(shm_motor_faults(1 << 5), kMotorEncoderLost);
+}
+
+TEST(ShmCodec, WhatTheDaemonWritesAClientReadsBackWithinFloatPrecision) {
+  SensorFrame frame;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    frame.q[i] = 0.1 * static_cast<double>(i) - 0.5;
+    frame.qd[i] = -0.2 * static_cast<double>(i);
+    frame.tau[i] = 0.7 * static_cast<double>(i) - 3.0;
+    frame.temperature_c[i] = 30.0 + static_cast<double>(i);
+  }
+  frame.motor_faults[4] = kMotorEncoderLost;
+  frame.driver_mode[9] = MotorDriverMode::Reset;
+  frame.imu_quat = {0.9, 0.1, -0.3, 0.2};
+  frame.imu_gyro = {0.4, -0.5, 0.6};
+  frame.imu_accel = {0.1, 0.2, 9.81};
+  leg_state_t legs[kNumLegs]{};
+  encode_shm_legs(frame, legs);
+  const JointReading joints = decode_shm_legs(legs);
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    EXPECT_NEAR(joints.q[i], frame.q[i], 1e-6) << i;
+    EXPECT_NEAR(joints.qd[i], frame.qd[i], 1e-6) << i;
+    EXPECT_NEAR(joints.tau[i], frame.tau[i], 1e-6) << i;
+    EXPECT_DOUBLE_EQ(joints.temperature_c[i], frame.temperature_c[i]) << i;
+  }
+  EXPECT_EQ(joints.motor_faults[4], kMotorEncoderLost);
+  EXPECT_EQ(joints.driver_mode[4], MotorDriverMode::Reset) << "a motor with an error is not enabled";
+  EXPECT_EQ(joints.driver_mode[9], MotorDriverMode::Reset);
+  EXPECT_EQ(joints.driver_mode[0], MotorDriverMode::Motor);
+  nav_imu_t imu{};
+  encode_shm_imu(frame, imu);
+  const ImuReading read = decode_shm_imu(imu);
+  for (std::size_t k = 0; k < 4; ++k) EXPECT_NEAR(read.quat[k], frame.imu_quat[k], 1e-6) << k;
+  for (std::size_t k = 0; k < 3; ++k) {
+    EXPECT_NEAR(read.gyro_rad_s[k], frame.imu_gyro[k], 1e-6) << k;
+    EXPECT_NEAR(read.specific_force_m_s2[k], frame.imu_accel[k], 1e-6) << k;
+  }
+}
+
+TEST(ShmCodec, AClientsCommandFrameSetsEveryLegsFlagZeroesTheFootAndDecodesToTheCommand) {
+  JointCommand command;
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    command.q_des[i] = 0.05 * static_cast<double>(i);
+    command.qd_des[i] = -0.1 * static_cast<double>(i);
+    command.kp[i] = 10.0 + static_cast<double>(i);
+    command.kd[i] = 0.5 + 0.1 * static_cast<double>(i);
+    command.tau_ff[i] = 1.5 - 0.25 * static_cast<double>(i);
+  }
+  leg_control_t legs[kNumLegs];
+  std::memset(legs, 0x7f, sizeof legs);  // whatever was there before
+  encode_shm_command(command, legs);
+  for (const leg_control_t& leg : legs) {
+    EXPECT_EQ(leg.flags, 1);
+    EXPECT_EQ(leg.foot.kp, 0.0f);
+    EXPECT_EQ(leg.foot.p_des, 0.0f);
+  }
+  EXPECT_FLOAT_EQ(legs[static_cast<std::size_t>(Leg::RL)].knee.kp,
+                  static_cast<float>(command.kp[joint_index(Leg::RL, Joint::Knee)]));
+  const JointCommand read = decode_shm_command(legs);
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    EXPECT_NEAR(read.q_des[i], command.q_des[i], 1e-6) << i;
+    EXPECT_NEAR(read.qd_des[i], command.qd_des[i], 1e-6) << i;
+    EXPECT_NEAR(read.kp[i], command.kp[i], 1e-5) << i;
+    EXPECT_NEAR(read.kd[i], command.kd[i], 1e-6) << i;
+    EXPECT_NEAR(read.tau_ff[i], command.tau_ff[i], 1e-6) << i;
+  }
+}
+
 }  // namespace
 }  // namespace cerebellum

@@ -1,0 +1,200 @@
+#include "io/shm_lowlevel_robot/shm_lowlevel_robot.hpp"
+
+#include <chrono>
+#include <cstddef>
+#include <cstring>
+#include <thread>
+
+#include "io/common/wall_clock.hpp"
+#include "io/robot_link/robot_link_log.hpp"
+#include "io/shm_lowlevel/shm_codec.hpp"
+#include "io/shm_lowlevel/shm_lowlevel_config.hpp"
+#include "safety/damping_command.hpp"
+
+namespace cerebellum {
+namespace {
+
+constexpr RobotLinkWords kLinkWords{"zsibot", "joint state or IMU from the daemon", "state.legs"};
+// the loop thread takes the state at least every millisecond (each substep): a longer gap is a
+// pause of its own (descheduled, the machine stalled), after which the link watch starts again
+constexpr double kListeningPauseS = 0.005;
+constexpr int kLinkLinesPerSecond = 4;
+// the daemon's cycle: a frame goes out again when the last one is this old
+constexpr double kDaemonPeriodS = 0.001;
+// the log thread's nap between looks at the statuses (the loop pushes one each 2 ms tick)
+constexpr auto kLogNap = std::chrono::milliseconds(5);
+
+// the 4-byte flags and the 8-byte timestamp are naturally aligned inside the packed layout
+constexpr std::size_t kStateFlagOffset = offsetof(spline_data_t, state) + offsetof(spline_state_data_t, consumer_flags) +
+                                         sizeof(std::uint32_t) * CONSUMER_CONTROL;
+constexpr std::size_t kCommandFlagOffset =
+    offsetof(spline_data_t, cmd) + offsetof(spline_cmd_data_t, consumer_flags) + sizeof(std::uint32_t) * CONSUMER_CONTROL;
+static_assert(kStateFlagOffset % alignof(std::uint32_t) == 0 && kCommandFlagOffset % alignof(std::uint32_t) == 0);
+static_assert(offsetof(nav_imu_t, timestamp) % alignof(std::uint64_t) == 0);
+
+template <typename T>
+std::atomic_ref<T> atomic_at(void* base, std::size_t offset_bytes) {
+  return std::atomic_ref<T>(*reinterpret_cast<T*>(static_cast<char*>(base) + offset_bytes));
+}
+
+}  // namespace
+
+ShmLowLevelRobot::ShmLowLevelRobot(const ShmRobotConfig& config, std::FILE* log)
+    : config_(config),
+      log_(log),
+      watch_(config.link_timeout_s),
+      listening_(kListeningPauseS),
+      link_log_(log, kLinkWords.robot, "link events", kLinkLinesPerSecond) {
+  thread_.start([this] {
+    log_step();
+    std::this_thread::sleep_for(kLogNap);
+  }, [this] { log_step(); });
+}
+
+ShmLowLevelRobot::~ShmLowLevelRobot() { thread_.stop(); }
+
+bool ShmLowLevelRobot::map_objects() {
+  if (spline_ && imu_) return true;
+  const std::string spline_name = shm_spline_object_name(config_.name_prefix);
+  const std::string imu_name = shm_imu_object_name(config_.name_prefix);
+  if (!spline_) spline_ = ShmMapping::open_existing(spline_name, sizeof(spline_data_t), not_mapped_why_);
+  if (spline_ && !imu_) imu_ = ShmMapping::open_existing(imu_name, sizeof(nav_imu_t), not_mapped_why_);
+  return spline_ && imu_;
+}
+
+void ShmLowLevelRobot::take_state() {
+  if (!spline_ || !imu_) return;
+  const double now_s = wall_seconds();
+  listening_.step(now_s);
+  const std::atomic_ref<std::uint32_t> flag = atomic_at<std::uint32_t>(spline(), kStateFlagOffset);
+  // the flag's acquire pairs with the daemon's release: the legs and the IMU before it are complete
+  if (flag.load(std::memory_order_acquire) == 0) return;
+  leg_state_t legs[kNumLegs];
+  std::memcpy(legs, spline()->state.legs, sizeof legs);
+  const std::uint64_t imu_timestamp =
+      atomic_at<std::uint64_t>(imu(), offsetof(nav_imu_t, timestamp)).load(std::memory_order_acquire);
+  nav_imu_t imu_frame;
+  std::memcpy(&imu_frame, imu(), sizeof imu_frame);
+  // the daemon clears the flags before it writes the next state: still set after the copy, the
+  // copy is whole; gone, the daemon was writing under it
+  std::atomic_thread_fence(std::memory_order_acquire);
+  if (flag.load(std::memory_order_relaxed) == 0) {
+    ++counts_.torn_states;
+    return;
+  }
+  flag.store(0, std::memory_order_relaxed);
+  ++counts_.states_taken;
+  watch_.take_joints(decode_shm_legs(legs), now_s);
+  if (!have_imu_timestamp_ || imu_timestamp != imu_timestamp_) {
+    watch_.take_imu(decode_shm_imu(imu_frame), now_s);
+    imu_timestamp_ = imu_timestamp;
+    have_imu_timestamp_ = true;
+  }
+}
+
+void ShmLowLevelRobot::send_frame() {
+  if (!spline_ || !have_command_) return;
+  const std::atomic_ref<std::uint32_t> flag = atomic_at<std::uint32_t>(spline(), kCommandFlagOffset);
+  // the acquire pairs with the daemon's clear (release, after its copy): 0 means it has the frame
+  if (flag.load(std::memory_order_acquire) != 0) {
+    ++counts_.frames_waiting;
+    return;
+  }
+  leg_control_t legs[kNumLegs];
+  encode_shm_command(command_, legs);
+  std::memcpy(spline()->cmd.legs, legs, sizeof legs);
+  flag.store(1, std::memory_order_release);
+  ++counts_.frames_written;
+  sent_at_s_ = robot_time_s_;
+}
+
+SensorFrame ShmLowLevelRobot::read() {
+  take_state();
+  const SensorFrame frame = watch_.frame(listening_.window(), robot_time_s_);
+  statuses_.try_push(StatusAt{watch_.status(), robot_time_s_});
+  return frame;
+}
+
+void ShmLowLevelRobot::write(const JointCommand& command) {
+  // after a motor error the client stops for good: damping, holding nothing, until restart
+  if (watch_.status().stopped) {
+    command_ = damping_command(config_.motor_error_damping_kd, watch_.q());
+    ++counts_.damping_frames;
+  } else {
+    command_ = command;
+  }
+  have_command_ = true;
+  send_frame();
+}
+
+void ShmLowLevelRobot::advance(double period_s) {
+  take_state();
+  if (robot_time_s_ - sent_at_s_ >= kDaemonPeriodS - 1e-9) send_frame();
+  robot_time_s_ += period_s;
+}
+
+bool ShmLowLevelRobot::activate(const std::atomic<bool>& stop) {
+  const double deadline_s = wall_seconds() + config_.activation_timeout_s;
+  const auto period = std::chrono::duration<double>(kDaemonPeriodS);
+  bool announced = false;
+  while (!stop.load(std::memory_order_relaxed) && wall_seconds() < deadline_s) {
+    if (map_objects()) {
+      if (!announced) {
+        std::fprintf(log_, "zsibot: mapped %s and %s; waiting for the daemon's state\n", spline_->name().c_str(),
+                     imu_->name().c_str());
+        std::fflush(log_);
+        announced = true;
+      }
+      read();
+      if (!watch_.status().link_lost) return true;
+    }
+    std::this_thread::sleep_for(period);
+  }
+  if (spline_ && imu_) {
+    not_mapped_why_ = "the daemon's state did not update (state.consumer_flags[CONSUMER_CONTROL] stayed 0, or the "
+                      "IMU's timestamp did not move)";
+  }
+  return false;
+}
+
+std::string ShmLowLevelRobot::activation_text() const {
+  char text[320];
+  std::snprintf(text, sizeof text, "the ZsiBot's daemon at %s and %s (its state updating, up to %g s)",
+                shm_spline_object_name(config_.name_prefix).c_str(), shm_imu_object_name(config_.name_prefix).c_str(),
+                config_.activation_timeout_s);
+  return text;
+}
+
+std::string ShmLowLevelRobot::activation_failure() const {
+  return "the daemon did not answer within " + std::to_string(config_.activation_timeout_s) +
+         " s: " + not_mapped_why_ + " (is the vendor's daemon running, with low-level control allowed?)";
+}
+
+std::string ShmLowLevelRobot::description() const {
+  return "ZsiBot through lowlevel.h (" + shm_spline_object_name(config_.name_prefix) + ", " +
+         shm_imu_object_name(config_.name_prefix) + ")";
+}
+
+void ShmLowLevelRobot::log_step() {
+  while (const std::optional<StatusAt> now = statuses_.try_pop()) {
+    log_link_changes(logged_.status, now->status, now->robot_time_s, config_.link_timeout_s, kLinkWords,
+                     wall_seconds(), link_log_, log_);
+    logged_ = *now;
+    std::fflush(log_);
+  }
+}
+
+void ShmLowLevelRobot::finish(std::FILE* out) {
+  thread_.stop();
+  const RobotLinkStatus& s = watch_.status();
+  using ull = unsigned long long;
+  std::fprintf(out,
+               "zsibot: %s; %llu link losses; %llu states taken, %llu torn (not taken), states %llu repeated, %llu "
+               "jumped; %llu frames written, %llu waited for the daemon, %llu damping frames after a motor error\n",
+               s.stopped ? "stopped on a motor error" : "no motor error", ull(s.link_losses), ull(counts_.states_taken),
+               ull(counts_.torn_states), ull(s.repeated_states), ull(s.jumped_states), ull(counts_.frames_written),
+               ull(counts_.frames_waiting), ull(counts_.damping_frames));
+  std::fflush(out);
+}
+
+}  // namespace cerebellum
