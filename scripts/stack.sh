@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # The stacked pair on one host (docs/real-robot.md): MC A is `cerebellum sim` serving the motor SDK
-# (config/stack/sim.yaml) in place of a CyberDog2's own MC, MC B is `cerebellum run` driving A
-# through it and serving the high-level interfaces (config/stack/cyberdog2-motor-sdk.yaml). Both
-# run paced by the wall clock in one private network namespace (scripts/netns_run.sh): nothing
-# reaches a real interface.
-#   scripts/stack.sh [--cerebellum EXE] [--logs DIR] [COMMAND [ARGS...]]
+# and the lowlevel.h shared memory (config/stack/sim.yaml) in place of the robot's own MC, MC B is
+# `cerebellum run` driving A through one of them and serving the high-level interfaces
+# (config/stack/ROBOT.yaml: cyberdog2-motor-sdk, the default, or zsibot-shm). Both run paced by the
+# wall clock in one private network namespace (scripts/netns_run.sh): nothing reaches a real
+# interface.
+#   scripts/stack.sh [--robot ROBOT] [--cerebellum EXE] [--logs DIR] [COMMAND [ARGS...]]
 # With a command: runs it in the namespace once both are ready, with STACK_A_PID, STACK_B_PID,
-# STACK_A_LOG and STACK_B_LOG in its environment, then stops both and exits with its status.
+# STACK_A_LOG, STACK_B_LOG and STACK_ROBOT in its environment, then stops both and exits with its status.
 # Without one: runs until Ctrl-C. e.g. scripts/stack.sh bash  (then: cerebellum cmd stand --ttl 0)
 set -euo pipefail
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -17,11 +18,13 @@ fi
 
 exe=""
 logs=""
+robot=cyberdog2-motor-sdk
 while [[ $# -gt 0 ]]; do
   case $1 in
+    --robot) robot=$2; shift 2 ;;
     --cerebellum) exe=$2; shift 2 ;;
     --logs) logs=$2; shift 2 ;;
-    --help|-h) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --help|-h) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) break ;;
   esac
 done
@@ -31,6 +34,11 @@ if [[ -z "$exe" ]]; then
   done
 fi
 [[ -x "$exe" ]] || { echo "stack.sh: no cerebellum program (give --cerebellum EXE)" >&2; exit 2; }
+b_config="$root/config/stack/$robot.yaml"
+if [[ "$robot" == sim || ! -f "$b_config" ]]; then
+  echo "stack.sh: --robot $robot: no config/stack/$robot.yaml for MC B (cyberdog2-motor-sdk or zsibot-shm)" >&2
+  exit 2
+fi
 logs=${logs:-$(mktemp -d /tmp/cerebellum-stack.XXXXXX)}
 mkdir -p "$logs"
 a_log="$logs/a-sim.log"
@@ -65,13 +73,13 @@ trap 'exit 130' INT TERM
 "$exe" sim --speed 1 --config "$root/config/stack/sim.yaml" > "$a_log" 2>&1 &
 a_pid=$!
 wait_ready "$a_pid" "$a_log" "MC A (cerebellum sim)" 60
-# B activates A's motor mode before its ready line: the robot lies 2 s first
-"$exe" run --config "$root/config/stack/cyberdog2-motor-sdk.yaml" > "$b_log" 2>&1 &
+# B activates the robot before its ready line (a CyberDog2's motor mode: the robot lies 2 s first)
+"$exe" run --config "$b_config" > "$b_log" 2>&1 &
 b_pid=$!
 wait_ready "$b_pid" "$b_log" "MC B (cerebellum run)" 60
-echo "stack.sh: A (pid $a_pid, log $a_log) and B (pid $b_pid, log $b_log) ready"
+echo "stack.sh: A (pid $a_pid, log $a_log) and B ($robot, pid $b_pid, log $b_log) ready"
 
-export STACK_A_PID=$a_pid STACK_B_PID=$b_pid STACK_A_LOG=$a_log STACK_B_LOG=$b_log
+export STACK_A_PID=$a_pid STACK_B_PID=$b_pid STACK_A_LOG=$a_log STACK_B_LOG=$b_log STACK_ROBOT=$robot
 if [[ $# -gt 0 ]]; then
   status=0
   "$@" || status=$?

@@ -7,6 +7,7 @@ ClientInterfaces::ClientInterfaces(Mc& mc, LinkFaultSet* link_faults, std::FILE*
   ControlLoop& loop = mc.loop();
   if (config.shm.enabled) {
     shm_.emplace(config.shm, config.safety, log);
+    if (link_faults != nullptr) shm_->attach_link_faults(link_faults->shm);
     mc.arbiter().add_low_level_source(shm_->source());
     loop.add_substep_participant(*shm_);
   }

@@ -6,6 +6,7 @@
 
 #include "cli/sim_command_client.hpp"
 #include "backend/fault_request.hpp"
+#include "io/common/link_faults.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_sim_control/sim_command_text.hpp"
 
@@ -25,8 +26,9 @@ std::string usage() {
          "  imu bias RAD_S | stuck | dropout | nan\n"
          "  battery soc PERCENT | drain FACTOR | capacity AH | sag VOLTS\n"
          "  foot LEG slippery [MU]                           ground friction under one foot (default 0.05)\n"
-         "  link highlevel|motor_sdk|aliengo drop P | delay S | duplicate P | corrupt P | clear\n"
-         "                                                  incoming client packets (probabilities 0..1)\n"
+         "  link " + link_names("|") + " drop P | delay S | duplicate P | corrupt P | clear\n"
+         "                                                  incoming client packets, the shared memory's\n"
+         "                                                  command frames (probabilities 0..1)\n"
          "  clear [motor N | imu | battery | foot LEG]        everything, or one component\n"
          "  N: 0..11 in SDK order or a name such as FR_knee; LEG: 0..3 or FR, FL, RR, RL\n"
          "  for SECONDS   the fault clears itself after this much simulated time\n"

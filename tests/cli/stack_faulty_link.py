@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
 """The stacked pair in real time (issue 42) over a poor link: a high-level client on MC B stands the
-robot up (12); then `cerebellum fault link motor_sdk` on MC A drops 10 % of the motor_ctrl frames
-B sends and delays the rest by 2 ms, and the client walks the robot at 1.0 m/s (11/3). Judged on
-A's sim_truth in A's robot time: over the last 5 s of an 8 s walk the forward speed is within 10 %
-of the command and the robot never falls; A took both faults.
+robot up (12); then `cerebellum fault link LINK` on MC A drops 10 % of the command frames B sends
+(motor_sdk: its motor_ctrl packets; shm: its lowlevel.h command frames, by STACK_ROBOT) and delays
+the rest by 2 ms, and the client walks the robot at 1.0 m/s (11/3). Judged on A's sim_truth in A's
+robot time: over the last 5 s of an 8 s walk the forward speed is within 10 % of the command and
+the robot never falls; A took both faults.
 
     PYTHONPATH=<generated python types> stack_faulty_link.py CEREBELLUM   (inside scripts/stack.sh)
 """
+import os
 import subprocess
 import sys
 
@@ -19,19 +21,22 @@ SPEED_TOLERANCE = 0.10
 FALLEN_TILT_DEG = 35.0
 FALLEN_HEIGHT_M = 0.15
 FAULTS = (["drop", "0.1"], ["delay", "0.002"])
+# the link B's commands take into A, per robot
+LINKS = {"cyberdog2-motor-sdk": "motor_sdk", "zsibot-shm": "shm"}
 
 
 def main():
     exe = sys.argv[1]
+    link = LINKS[os.environ.get("STACK_ROBOT", "cyberdog2-motor-sdk")]
     client = StackClient("stack_faulty_link")
     stood_from = client.stand()
     client.spin(30.0, lambda: client.truth_s() >= stood_from + 1.0)
     for fault in FAULTS:
         # A takes push and fault on the url of its sim_truth (config/stack/sim.yaml)
-        taken = subprocess.run([exe, "fault", "link", "motor_sdk"] + fault + ["--url", TRUTH_URL, "--timeout", "10"],
+        taken = subprocess.run([exe, "fault", "link", link] + fault + ["--url", TRUTH_URL, "--timeout", "10"],
                                capture_output=True, text=True)
-        print("stack_faulty_link: cerebellum fault link motor_sdk %s at A: exit %d, %s"
-              % (" ".join(fault), taken.returncode, taken.stdout.strip()))
+        print("stack_faulty_link: cerebellum fault link %s %s at A: exit %d, %s"
+              % (link, " ".join(fault), taken.returncode, taken.stdout.strip()))
         if taken.returncode != 0:
             client.fail("A did not take the link fault: " + taken.stdout + taken.stderr)
 

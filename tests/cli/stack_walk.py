@@ -70,7 +70,7 @@ def main():
     with open(os.environ["STACK_B_LOG"]) as log:
         lines_before_kill = sum(1 for _ in log)
     os.kill(int(os.environ["STACK_A_PID"]), signal.SIGKILL)
-    pattern = re.compile(r"link lost at ([0-9.]+) s robot time: no spi_data or state_estimator for ([0-9.]+) ms")
+    pattern = re.compile(r"link lost at ([0-9.]+) s robot time: no .+? for ([0-9.]+) ms")
     found = None
     end = time.time() + 10.0
     while found is None and time.time() < end:

@@ -13,9 +13,15 @@ std::string format_number(double value) { return number_text(value, 12); }
 
 }  // namespace
 
+std::string link_names(const std::string& separator) {
+  std::string names;
+  for (const char* name : kLinkNames) names += (names.empty() ? "" : separator) + name;
+  return names;
+}
+
 LinkFaultParse parse_link_fault(const std::vector<std::string>& words) {
   const auto failure = [](std::string why) { return LinkFaultParse{std::nullopt, std::move(why)}; };
-  const std::string usage = "link highlevel|motor_sdk|aliengo drop P | delay SECONDS | duplicate P | corrupt P | clear";
+  const std::string usage = "link " + link_names("|") + " drop P | delay SECONDS | duplicate P | corrupt P | clear";
   if (words.size() < 3 || words[0] != "link") return failure("expected: " + usage);
   LinkFaultRequest request;
   bool known = false;
@@ -25,7 +31,7 @@ LinkFaultParse parse_link_fault(const std::vector<std::string>& words) {
       known = true;
     }
   }
-  if (!known) return failure("unknown link '" + words[1].substr(0, 32) + "' (accepted: highlevel, motor_sdk, aliengo)");
+  if (!known) return failure("unknown link '" + words[1].substr(0, 32) + "' (accepted: " + link_names(", ") + ")");
   request.field = words[2];
   if (request.field == "clear") {
     if (words.size() != 3) return failure("link " + words[1] + " clear takes nothing more");

@@ -1,8 +1,9 @@
-// Faults on a client's link, for the simulation: incoming packets of one interface dropped,
-// delayed, duplicated or corrupted (one byte changed) with given probabilities, between the
-// socket and the interface's decoder. Set from any thread (the simulation's control channel),
-// applied in the interface's adapter thread; never built for a real robot.
-//   link highlevel|motor_sdk|aliengo drop P | delay SECONDS | duplicate P | corrupt P
+// Faults on a client's link, for the simulation: incoming packets of one interface (for the shared
+// memory: its command frames) dropped, delayed, duplicated or corrupted (one byte changed) with
+// given probabilities, between the socket (the memory) and the interface's decoder. Set from any
+// thread (the simulation's control channel), applied in the thread that takes the packets (the
+// adapter's; the loop's for the shared memory); never built for a real robot.
+//   link highlevel|motor_sdk|aliengo|shm drop P | delay SECONDS | duplicate P | corrupt P
 //   link NAME clear
 #pragma once
 
@@ -19,8 +20,11 @@
 
 namespace cerebellum {
 
-enum class Link { HighLevel, MotorSdk, AlienGo };
-inline constexpr std::array<const char*, 3> kLinkNames{"highlevel", "motor_sdk", "aliengo"};
+enum class Link { HighLevel, MotorSdk, AlienGo, Shm };
+inline constexpr std::array<const char*, 4> kLinkNames{"highlevel", "motor_sdk", "aliengo", "shm"};
+
+// the names joined: link_names("|") gives "highlevel|motor_sdk|aliengo|shm"
+std::string link_names(const std::string& separator);
 
 struct LinkFaultSettings {
   double drop = 0.0;       // probability a packet is lost
@@ -92,8 +96,15 @@ struct LinkFaultSet {
   LinkFaults highlevel{1};
   LinkFaults motor_sdk{2};
   LinkFaults aliengo{3};
+  LinkFaults shm{4};
   LinkFaults& of(Link link) {
-    return link == Link::HighLevel ? highlevel : link == Link::MotorSdk ? motor_sdk : aliengo;
+    switch (link) {
+      case Link::HighLevel: return highlevel;
+      case Link::MotorSdk: return motor_sdk;
+      case Link::AlienGo: return aliengo;
+      case Link::Shm: break;
+    }
+    return shm;
   }
 };
 

@@ -3,6 +3,8 @@
 #include <cstddef>
 #include <cstring>
 
+#include "io/common/wall_clock.hpp"
+
 namespace cerebellum {
 namespace {
 
@@ -60,11 +62,24 @@ bool ShmLowLevelPort::on_substep(const SensorFrame& frame, JointCommand& command
 }
 
 bool ShmLowLevelPort::take_command(JointCommand& command) {
+  bool taken = false;
+  // a frame reaches the decoder through the link's faults, when the simulation set any
+  const LinkFaults::Deliver deliver = [this, &taken](const std::uint8_t* data, std::size_t size) {
+    if (size != sizeof(command_legs_)) return;
+    std::memcpy(command_legs_, data, size);
+    taken = true;
+  };
+  const double now_s = wall_seconds();
   // the flag's acquire pairs with the client's release: its legs are complete
-  if (command_flag().load(std::memory_order_acquire) == 0) return false;
-  std::memcpy(command_legs_, spline()->cmd.legs, sizeof(command_legs_));
-  // the release orders the copy before the clear: a client that sees 0 may write the next frame
-  command_flag().store(0, std::memory_order_release);
+  if (command_flag().load(std::memory_order_acquire) != 0) {
+    leg_control_t legs[kNumLegs];
+    std::memcpy(legs, spline()->cmd.legs, sizeof(legs));
+    // the release orders the copy before the clear: a client that sees 0 may write the next frame
+    command_flag().store(0, std::memory_order_release);
+    receive_through(link_faults_, reinterpret_cast<const std::uint8_t*>(legs), sizeof(legs), now_s, deliver);
+  }
+  release_due(link_faults_, now_s, deliver);
+  if (!taken) return false;
   command = decode_shm_command(command_legs_);
   return true;
 }

@@ -13,6 +13,7 @@
 #include <string>
 
 #include "cycle/substep_participant.hpp"
+#include "io/common/link_faults.hpp"
 #include "io/shm_lowlevel/shm_codec.hpp"
 #include "io/shm_lowlevel/shm_event_log.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
@@ -32,6 +33,10 @@ class ShmLowLevelPort final : public ShmLink, public SubstepParticipant {
   ~ShmLowLevelPort() override;
   ShmLowLevelPort(const ShmLowLevelPort&) = delete;
   ShmLowLevelPort& operator=(const ShmLowLevelPort&) = delete;
+
+  // the simulation's faults on the command frames (`cerebellum fault link shm ...`); before the
+  // loop runs (the loop thread applies them)
+  void attach_link_faults(LinkFaults& faults) { link_faults_ = &faults; }
 
   // register with SourceArbiter::add_low_level_source
   ShmLowLevelSource& source() { return source_; }
@@ -68,6 +73,7 @@ class ShmLowLevelPort final : public ShmLink, public SubstepParticipant {
   ShmEventLog log_;
   std::FILE* log_file_;
 
+  LinkFaults* link_faults_ = nullptr;
   // loop thread only: the frames as the vendor structs hold them
   leg_control_t command_legs_[kNumLegs]{};
   leg_state_t state_legs_[kNumLegs]{};

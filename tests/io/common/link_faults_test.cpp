@@ -91,7 +91,7 @@ TEST(LinkFaults, ADelayedPacketArrivesWhenItIsDueAndInOrder) {
 
 TEST(LinkFaults, TheGrammarRefusesWhatItDoesNotKnow) {
   const auto error = [](std::vector<std::string> words) { return parse_link_fault(words).error; };
-  EXPECT_NE(error({"link", "wifi", "drop", "1"}).find("unknown link 'wifi' (accepted: highlevel, motor_sdk, aliengo)"),
+  EXPECT_NE(error({"link", "wifi", "drop", "1"}).find("unknown link 'wifi' (accepted: highlevel, motor_sdk, aliengo, shm)"),
             std::string::npos);
   EXPECT_NE(error({"link", "highlevel", "jam", "1"}).find("unknown link fault 'jam'"), std::string::npos);
   EXPECT_NE(error({"link", "highlevel", "drop", "2"}).find("must be a number in [0, 1], got '2'"), std::string::npos);
