@@ -5,12 +5,14 @@ phase (mode 21 gait 0): for judging the seed's "head up" / "head down" on what t
 really did. Pitch is right-handed about the body's y axis (to the left): negative is nose up.
 
     PYTHONPATH=<generated python types> python3 pose_truth_watch.py
+    (SIM_TRUTH_URL: where the simulation's truth comes, when not on the default odometry url)
 
 Runs until SIGINT / SIGTERM, then prints KEY=VALUE lines:
   most_nose_up_in_21_0_rad   the most nose-up pitch while the response said mode 21 gait 0
   pitch_when_21_5_came_rad   the pitch of the last truth sample before the response said 21/5
   samples_in_21_0            truth samples taken in that phase
 """
+import os
 import select
 import signal
 import sys
@@ -19,7 +21,7 @@ import lcm
 from robot_control_response_lcmt import robot_control_response_lcmt
 from sim_truth_lcmt import sim_truth_lcmt
 
-TRUTH_URL = "udpm://239.255.76.67:7667?ttl=0"
+TRUTH_URL = os.environ.get("SIM_TRUTH_URL", "udpm://239.255.76.67:7667?ttl=0")
 RESPONSE_URL = "udpm://239.255.76.67:7670?ttl=0"
 
 
