@@ -1,6 +1,7 @@
 // The one interface between the MC and a robot: simulated or real.
 #pragma once
 
+#include "core/robot_readings.hpp"
 #include "core/types.hpp"
 
 namespace cerebellum {
@@ -17,6 +18,8 @@ class RobotBackend {
   // its physics, a hardware backend returns at once (real time passes by itself)
   virtual void advance(double period_s) = 0;
   virtual double time_s() const = 0;
+  // a real robot's link as of the last read (a simulation has none)
+  virtual RobotLinkReport link_report() const { return {}; }
 };
 
 }  // namespace cerebellum

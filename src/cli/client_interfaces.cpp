@@ -1,5 +1,7 @@
 #include "cli/client_interfaces.hpp"
 
+#include <cmath>
+
 namespace cerebellum {
 
 ClientInterfaces::ClientInterfaces(Mc& mc, LinkFaultSet* link_faults, std::FILE* log) {
@@ -22,6 +24,10 @@ ClientInterfaces::ClientInterfaces(Mc& mc, LinkFaultSet* link_faults, std::FILE*
                        config.loop_period_s, log);
     if (link_faults != nullptr) highlevel_->attach_link_faults(link_faults->highlevel);
     loop.add_observer(*highlevel_);
+    // where `cerebellum status` reads the responses, the MC's own figures once a second
+    diagnostics_.emplace(config.highlevel.response_url, robot_kind_name(config.robot_kind),
+                         static_cast<std::size_t>(std::lround(1.0 / config.loop_period_s)));
+    loop.add_observer(*diagnostics_);
   }
   if (config.aliengo.enabled) {
     aliengo_.emplace(mc.client_port(HighLevelSource::AlienGoUdp), mc.aliengo_source().inbox(), config.aliengo, log);
@@ -41,6 +47,7 @@ void ClientInterfaces::finish(std::FILE* out) {
   if (highlevel_) highlevel_->finish(out);
   if (aliengo_) aliengo_->finish(out);
   if (state_feedback_) state_feedback_->finish();
+  if (diagnostics_) diagnostics_->finish();
 }
 
 }  // namespace cerebellum

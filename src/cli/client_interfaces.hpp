@@ -1,12 +1,14 @@
 // The client interfaces an MC serves, as its configuration enables them: the shared memory, the
 // motor SDK, the CyberDog2 high-level LCM interface, the AlienGo UDP interface and the state
-// feedback both CyberDog2 interfaces list. One assembly for `cerebellum sim` and `cerebellum run`.
+// feedback both CyberDog2 interfaces list; with the high-level interface, the MC's own diagnostics
+// for `cerebellum status`. One assembly for `cerebellum sim` and `cerebellum run`.
 #pragma once
 
 #include <cstdio>
 #include <optional>
 
 #include "io/common/link_faults.hpp"
+#include "io/lcm_diagnostics/lcm_diagnostics_publisher.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_adapter.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_adapter.hpp"
 #include "io/lcm_motor_sdk/lcm_state_feedback.hpp"
@@ -35,6 +37,7 @@ class ClientInterfaces {
   std::optional<LcmHighLevelAdapter> highlevel_;
   std::optional<UdpAliengoAdapter> aliengo_;
   std::optional<LcmStateFeedback> state_feedback_;
+  std::optional<LcmDiagnosticsPublisher> diagnostics_;
 };
 
 }  // namespace cerebellum

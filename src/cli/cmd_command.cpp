@@ -10,6 +10,7 @@
 #include <thread>
 
 #include "cli/cmd_options.hpp"
+#include "cli/diagnostics_listener.hpp"
 #include "cli/stop_signal.hpp"
 #include "io/common/motor_error_word.hpp"
 
@@ -182,6 +183,13 @@ int run_status_command(const std::vector<std::string>& args) {
     std::fprintf(stderr, "status: %s: %s\n", to_string(status), client.last_error().c_str());
     return 1;
   }
+  std::optional<DiagnosticsListener> diagnostics;
+  try {
+    if (options.diagnostics) diagnostics.emplace(client_settings.response_url);
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "status: %s\n", e.what());
+    return 1;
+  }
   const auto period = std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(1.0 / options.rate_hz));
   Clock::time_point next_line = Clock::now();
   Clock::time_point last_news = Clock::now();
@@ -196,6 +204,12 @@ int run_status_command(const std::vector<std::string>& args) {
     } else if (seconds_since(last_news) > options.timeout_s) {
       std::fprintf(stderr, "status: %s within %.1f s\n", no_response_hint(client_settings).c_str(), options.timeout_s);
       return 1;
+    }
+    if (diagnostics) {
+      if (const std::optional<mc_diagnostics_lcmt> figures = diagnostics->poll()) {
+        std::printf("%s\n", describe_diagnostics(*figures).c_str());
+        std::fflush(stdout);
+      }
     }
     const Clock::time_point now = Clock::now();
     if (responses_seen == 0 || now < next_line) continue;

@@ -65,11 +65,17 @@ std::string walking_gait_ids() {
   return ids;
 }
 
+std::set<std::string> all_of(std::set<std::string> options, const std::set<std::string>& flags) {
+  options.insert(flags.begin(), flags.end());
+  return options;
+}
+
 // the option values of one command line, checked against the accepted option names
 class OptionValues {
  public:
+  // accepted: options with a value; flags: options without one
   OptionValues(std::string context, const std::vector<std::string>& args, std::size_t first,
-               const std::set<std::string>& accepted, bool& help)
+               const std::set<std::string>& accepted, bool& help, const std::set<std::string>& flags = {})
       : context_(std::move(context)) {
     for (std::size_t i = first; i < args.size(); ++i) {
       const std::string& arg = args[i];
@@ -77,9 +83,13 @@ class OptionValues {
         help = true;
         continue;
       }
+      if (flags.count(arg) != 0) {
+        values_[arg] = "";
+        continue;
+      }
       if (arg.rfind("--", 0) != 0 || accepted.count(arg) == 0) {
         fail("unknown " + std::string(arg.rfind("--", 0) == 0 ? "option" : "argument") + " '" + arg +
-             "' (accepted: " + (accepted.empty() ? std::string("none") : join(accepted)) + ")");
+             "' (accepted: " + (accepted.empty() && flags.empty() ? std::string("none") : join(all_of(accepted, flags))) + ")");
       }
       if (i + 1 >= args.size()) fail(arg + " needs a value");
       values_[arg] = args[++i];
@@ -235,8 +245,11 @@ std::string cmd_usage() {
 }
 
 std::string status_usage() {
-  return "usage: cerebellum status [--count N] [--rate HZ] [--timeout S] [--ttl N]\n"
+  return "usage: cerebellum status [--count N] [--rate HZ] [--timeout S] [--ttl N] [--diagnostics]\n"
          "  prints robot_control_response and global_to_robot (odometry) until Ctrl-C\n"
+         "  --diagnostics also the MC's own figures once a second (mc_diagnostics): the loop's period\n"
+         "                p50 / p99 / max, and on a real robot its link: the state's age p50 / p99 / max,\n"
+         "                link losses, refused states, late frames\n"
          "  --count N     stop after N lines (N >= 1)\n"
          "  --rate HZ     lines per second, in [0.1, 50] (default 5)\n"
          "  --timeout S   give up when no response arrives within S s (default 3)\n"
@@ -307,8 +320,10 @@ CmdOptions parse_cmd_options(const std::vector<std::string>& args) {
 
 StatusOptions parse_status_options(const std::vector<std::string>& args) {
   StatusOptions options;
-  const OptionValues values("status", args, 0, {"--count", "--rate", "--timeout", "--ttl"}, options.help);
+  const OptionValues values("status", args, 0, {"--count", "--rate", "--timeout", "--ttl"}, options.help,
+                            {"--diagnostics"});
   if (options.help) return options;
+  options.diagnostics = values.has("--diagnostics");
   if (values.has("--count")) options.count = values.integer("--count", 1, 1000000000L, 1);
   options.rate_hz = values.number("--rate", {0.1, 50.0}, " Hz", 5.0);
   options.timeout_s = values.number("--timeout", {0.1, 3600.0}, " s", 3.0);

@@ -28,6 +28,7 @@ struct StatusOptions {
   double rate_hz = 5.0;
   double timeout_s = 3.0;  // for the first response
   int ttl = 255;
+  bool diagnostics = false;  // also the MC's own figures (mc_diagnostics), once a second
 };
 
 std::string cmd_usage();

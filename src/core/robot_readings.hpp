@@ -25,4 +25,13 @@ struct ImuReading {
   std::array<double, 3> specific_force_m_s2{};     // body frame, +9.81 on z at rest
 };
 
+// how the link to a real robot fares, as its backend sees it at one tick (a simulation has none)
+struct RobotLinkReport {
+  bool present = false;
+  double state_age_s = 0.0;             // how old the newest full state (joints and IMU) was when read
+  std::uint64_t losses = 0;             // since start: times the link was lost
+  std::uint64_t states_refused = 0;     // since start: states that repeated the one before or jumped
+  std::uint64_t frames_late = 0;        // since start: frames the robot reported late or left a cycle untaken
+};
+
 }  // namespace cerebellum

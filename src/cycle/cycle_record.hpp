@@ -5,6 +5,7 @@
 
 #include "core/contact_plan.hpp"
 #include "core/high_level_command.hpp"
+#include "core/robot_readings.hpp"
 #include "core/robot_state.hpp"
 #include "core/types.hpp"
 #include "safety/command_guard.hpp"
@@ -23,6 +24,12 @@ struct CycleRecord {
   // the guard over the commands substep participants wrote during this tick's period (flags OR-ed;
   // zero when none did). Filled after the observers ran: they see the previous period's here
   SafetyReport substep_safety;
+  // wall time since the previous tick started, while the loop is paced (0 in lockstep and at the
+  // first tick); the late substeps so far
+  double loop_period_s = 0.0;
+  std::uint64_t late_substeps = 0;
+  // the real robot's link at this tick's read (present false on a simulation)
+  RobotLinkReport link;
 };
 
 }  // namespace cerebellum

@@ -32,8 +32,21 @@ void ControlLoop::add_substep_participant(SubstepParticipant& participant) {
 }
 
 const CycleRecord& ControlLoop::tick() {
+  // the loop's own timing, while paced by the wall clock
+  if (pace_speed_ > 0.0) {
+    const auto now = std::chrono::steady_clock::now();
+    record_.loop_period_s = last_tick_wall_ == std::chrono::steady_clock::time_point{}
+                                ? 0.0
+                                : std::chrono::duration<double>(now - last_tick_wall_).count();
+    last_tick_wall_ = now;
+  } else {
+    record_.loop_period_s = 0.0;
+    last_tick_wall_ = {};
+  }
+  record_.late_substeps = late_substeps_;
   // read
   const SensorFrame frame = backend_.read();
+  record_.link = backend_.link_report();
   // estimate, with the contacts the control stage planned last tick
   estimator_.update(frame, record_.contact_plan, record_.state);
   // the robot's health: the controller learns the protection, the guard enforces it
@@ -102,6 +115,7 @@ RunStats ControlLoop::run(const RunOptions& options, const std::atomic<bool>& st
   pace_robot_start_s_ = backend_.time_s();
   pace_wall_start_ = Clock::now();
   late_substeps_ = 0;
+  last_tick_wall_ = {};
   while (!stop.load(std::memory_order_relaxed)) {
     const double elapsed = backend_.time_s() - pace_robot_start_s_;
     if (options.duration_s >= 0.0 && elapsed >= options.duration_s - 1e-9) break;

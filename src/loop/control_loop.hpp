@@ -66,6 +66,7 @@ class ControlLoop {
   double pace_robot_start_s_ = 0.0;
   std::chrono::steady_clock::time_point pace_wall_start_{};
   std::uint64_t late_substeps_ = 0;
+  std::chrono::steady_clock::time_point last_tick_wall_{};  // while paced: when the last tick started
 };
 
 }  // namespace cerebellum

@@ -59,6 +59,16 @@ def main():
     if abs(speed - vx) > SPEED_TOLERANCE * vx:
         fail("the speed is not within %.0f %% of the command" % (SPEED_TOLERANCE * 100))
 
+    # B's own figures, as `cerebellum status --diagnostics` shows them: its loop and its robot's link
+    status = subprocess.run([exe, "status", "--ttl", "0", "--diagnostics", "--rate", "0.5", "--count", "2"],
+                            capture_output=True, text=True, timeout=30)
+    figures = [line for line in status.stdout.splitlines() if line.startswith("mc: loop period")]
+    print("stack_walk: cerebellum status --diagnostics at B: %s" % (figures[-1] if figures else status.stdout))
+    robot = {"cyberdog2-motor-sdk": "cyberdog2_motor_sdk", "zsibot-shm": "zsibot_shm"}[
+        os.environ.get("STACK_ROBOT", "cyberdog2-motor-sdk")]
+    if not figures or (" | %s link: state age p50 " % robot) not in figures[-1]:
+        fail("B's status does not show its loop period and its link's figures")
+
     push = subprocess.run([exe, "push", "10", "0", "--url", B_ODOMETRY_URL, "--timeout", "10"],
                           capture_output=True, text=True)
     print("stack_walk: cerebellum push at B: exit %d, %s" % (push.returncode, push.stdout.strip()))

@@ -88,6 +88,11 @@ SensorFrame LcmMotorSdkRobot::read() {
   return frame;
 }
 
+RobotLinkReport LcmMotorSdkRobot::link_report() const {
+  const MotorSdkClientStatus& s = client_.status();
+  return RobotLinkReport{true, s.link_silent_s, s.link_losses, s.repeated_states + s.jumped_states, s.late_reports};
+}
+
 void LcmMotorSdkRobot::write(const JointCommand& command) {
   frames_.try_push(encode_motor_ctrl(client_.command(command)));
 }

@@ -48,6 +48,7 @@ class LcmMotorSdkRobot final : public HardwareBackend {
   void write(const JointCommand& command) override;
   void advance(double period_s) override { robot_time_s_ += period_s; }
   double time_s() const override { return robot_time_s_; }
+  RobotLinkReport link_report() const override;
 
   // HardwareBackend. activate: all-zero frames at 500 Hz until the robot answers in motor mode
   // without err_flag bit 1; false when config.activation_timeout_s passes or stop is set

@@ -98,14 +98,23 @@ void ShmLowLevelRobot::send_frame() {
   // the acquire pairs with the daemon's clear (release, after its copy): 0 means it has the frame
   if (flag.load(std::memory_order_acquire) != 0) {
     ++counts_.frames_waiting;
+    // the frame went out a cycle ago and is still there: the daemon skipped a cycle
+    if (++waits_in_row_ == 2) ++counts_.frames_late;
     return;
   }
+  waits_in_row_ = 0;
   leg_control_t legs[kNumLegs];
   encode_shm_command(command_, legs);
   std::memcpy(spline()->cmd.legs, legs, sizeof legs);
   flag.store(1, std::memory_order_release);
   ++counts_.frames_written;
   sent_at_s_ = robot_time_s_;
+}
+
+RobotLinkReport ShmLowLevelRobot::link_report() const {
+  const RobotLinkStatus& s = watch_.status();
+  return RobotLinkReport{true, s.link_silent_s, s.link_losses, s.repeated_states + s.jumped_states,
+                         counts_.frames_late};
 }
 
 SensorFrame ShmLowLevelRobot::read() {
@@ -190,10 +199,10 @@ void ShmLowLevelRobot::finish(std::FILE* out) {
   using ull = unsigned long long;
   std::fprintf(out,
                "zsibot: %s; %llu link losses; %llu states taken, %llu torn (not taken), states %llu repeated, %llu "
-               "jumped; %llu frames written, %llu waited for the daemon, %llu damping frames after a motor error\n",
+               "jumped; %llu frames written, %llu waited for the daemon (%llu over a cycle), %llu damping frames after a motor error\n",
                s.stopped ? "stopped on a motor error" : "no motor error", ull(s.link_losses), ull(counts_.states_taken),
                ull(counts_.torn_states), ull(s.repeated_states), ull(s.jumped_states), ull(counts_.frames_written),
-               ull(counts_.frames_waiting), ull(counts_.damping_frames));
+               ull(counts_.frames_waiting), ull(counts_.frames_late), ull(counts_.damping_frames));
   std::fflush(out);
 }
 

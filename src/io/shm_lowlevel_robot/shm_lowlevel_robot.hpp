@@ -37,6 +37,7 @@ struct ShmRobotCounts {
   std::uint64_t torn_states = 0;     // copies the daemon overwrote meanwhile: not taken
   std::uint64_t frames_written = 0;  // command frames flagged for the daemon
   std::uint64_t frames_waiting = 0;  // a frame not written: the daemon had not taken the one before
+  std::uint64_t frames_late = 0;     // frames left untaken over a whole cycle (the daemon skipped one)
   std::uint64_t damping_frames = 0;  // frames replaced by damping after a motor error
 };
 
@@ -54,6 +55,7 @@ class ShmLowLevelRobot final : public HardwareBackend {
   // when the last one went out a millisecond ago
   void advance(double period_s) override;
   double time_s() const override { return robot_time_s_; }
+  RobotLinkReport link_report() const override;
 
   // HardwareBackend. activate: until both objects exist and the daemon's joint state and IMU are
   // updating; false when config.activation_timeout_s passes or stop is set
@@ -92,6 +94,7 @@ class ShmLowLevelRobot final : public HardwareBackend {
   JointCommand command_{};
   bool have_command_ = false;
   double sent_at_s_ = -1.0;  // robot time of the newest frame written
+  int waits_in_row_ = 0;     // attempts in a row that found the last frame not taken
   std::uint64_t imu_timestamp_ = 0;
   bool have_imu_timestamp_ = false;
   double robot_time_s_ = 0.0;
