@@ -71,9 +71,66 @@ TEST(RobotSection, AnUnknownKindIsRefusedWithTheAcceptedOnes) {
       << error;
 }
 
-TEST(RobotSection, TheZsibotRobotIsRefusedAsNotBuiltYet) {
-  const std::string error = load_error("robot: {kind: zsibot_shm}\n");
-  EXPECT_NE(error.find("robot.kind zsibot_shm is not built yet"), std::string::npos) << error;
+TEST(RobotSection, AZsibotRobotTakesItsDaemonsNamePrefixAndDefaultsToTheVendorsNames) {
+  const McConfig vendor = load_config(write_file("robot: {kind: zsibot_shm}\nshm: {enabled: false}\n"));
+  EXPECT_EQ(vendor.robot_kind, RobotKind::ZsibotShm);
+  EXPECT_EQ(vendor.shm_robot.name_prefix, "") << "the vendor's /spline_shm and /imu_shm";
+  EXPECT_DOUBLE_EQ(vendor.shm_robot.link_timeout_s, 0.020);
+  const McConfig stacked = load_config(write_file(
+      "robot: {kind: zsibot_shm, zsibot_shm: {name_prefix: stack_, link_timeout_s: 0.01, activation_timeout_s: 5,"
+      " motor_error_damping_kd: 2}}\n"));
+  EXPECT_EQ(stacked.shm_robot.name_prefix, "stack_");
+  EXPECT_DOUBLE_EQ(stacked.shm_robot.link_timeout_s, 0.01);
+  EXPECT_DOUBLE_EQ(stacked.shm_robot.activation_timeout_s, 5.0);
+  EXPECT_DOUBLE_EQ(stacked.shm_robot.motor_error_damping_kd, 2.0);
+  EXPECT_EQ(stacked.sim_truth.rate_hz, 0.0) << "no simulator truth on a real robot";
+}
+
+TEST(RobotSection, EveryZsibotSettingIsCheckedByName) {
+  const auto shm_error = [](const std::string& entry) {
+    return load_error("robot: {kind: zsibot_shm, zsibot_shm: {" + entry + "}}\nshm: {enabled: false}\n");
+  };
+  std::string error = shm_error("name_prefix: '../etc'");
+  EXPECT_NE(error.find("robot.zsibot_shm.name_prefix"), std::string::npos) << error;
+  EXPECT_NE(error.find("got '../etc'"), std::string::npos) << error;
+  error = shm_error("link_timeout_s: 0.001");
+  EXPECT_NE(error.find("robot.zsibot_shm.link_timeout_s must be in [0.003, 0.5], got 0.001"), std::string::npos)
+      << error;
+  error = shm_error("prefix: a");
+  EXPECT_NE(error.find("robot.zsibot_shm.prefix is not a known key"), std::string::npos) << error;
+}
+
+TEST(RobotSection, EachRobotsSubsectionIsRefusedWithAnotherKind) {
+  std::string error = load_error("robot: {kind: cyberdog2_motor_sdk, zsibot_shm: {name_prefix: a}}\n");
+  EXPECT_NE(error.find("robot.zsibot_shm applies only to robot.kind zsibot_shm (robot.kind is cyberdog2_motor_sdk)"),
+            std::string::npos)
+      << error;
+  error = load_error("robot: {kind: zsibot_shm, cyberdog2_motor_sdk: {link_timeout_s: 0.02}}\n");
+  EXPECT_NE(error.find("robot.cyberdog2_motor_sdk applies only to robot.kind cyberdog2_motor_sdk"), std::string::npos)
+      << error;
+}
+
+TEST(RobotSection, AZsibotMcDoesNotServeTheSharedMemoryItReadsFromItsDaemon) {
+  const std::string error = load_error("robot: {kind: zsibot_shm, zsibot_shm: {name_prefix: a_}}\n"
+                                       "shm: {enabled: true, name_prefix: a_}\n");
+  EXPECT_NE(error.find("shm.enabled would serve /a_spline_shm, the robot's own daemon's object"), std::string::npos)
+      << error;
+  EXPECT_EQ(load_error("robot: {kind: zsibot_shm, zsibot_shm: {name_prefix: a_}}\n"
+                       "shm: {enabled: true, name_prefix: b_}\n"),
+            "")
+      << "another name serves beside it";
+}
+
+TEST(RobotSection, EveryShippedRobotConfigurationLoadsAndNamesItsRobot) {
+  const std::string config_dir = std::string(CEREBELLUM_SOURCE_DIR) + "/config/";
+  EXPECT_EQ(load_config(config_dir + "robot-cyberdog2.yaml").robot_kind, RobotKind::Cyberdog2MotorSdk);
+  EXPECT_EQ(load_config(config_dir + "robot-zsibot.yaml").robot_kind, RobotKind::ZsibotShm);
+  EXPECT_EQ(load_config(config_dir + "stack/sim.yaml").robot_kind, RobotKind::Sim);
+  EXPECT_EQ(load_config(config_dir + "stack/cyberdog2-motor-sdk.yaml").robot_kind, RobotKind::Cyberdog2MotorSdk);
+  const McConfig stacked_zsibot = load_config(config_dir + "stack/zsibot-shm.yaml");
+  EXPECT_EQ(stacked_zsibot.robot_kind, RobotKind::ZsibotShm);
+  EXPECT_EQ(stacked_zsibot.shm_robot.name_prefix, load_config(config_dir + "stack/sim.yaml").shm.name_prefix)
+      << "B reads the shared memory A serves";
 }
 
 TEST(RobotSection, SimulationKeysAreRefusedOnARealRobot) {
