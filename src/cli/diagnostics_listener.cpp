@@ -40,10 +40,15 @@ std::string describe_diagnostics(const mc_diagnostics_lcmt& m) {
     used += std::snprintf(text + used, sizeof text - used, " [lockstep: no wall-clock period]");
   }
   if (m.link) {
-    std::snprintf(text + used, sizeof text - used,
-                  " | %s link: state age p50 %.2f / p99 %.2f / max %.2f ms, %lld losses, %lld states refused, %lld "
-                  "frames late",
-                  m.robot.c_str(), m.state_age_ms[0], m.state_age_ms[1], m.state_age_ms[2],
+    used += std::snprintf(text + used, sizeof text - used, " | %s link: state age p50 %.2f / p99 %.2f / max %.2f ms",
+                          m.robot.c_str(), m.state_age_ms[0], m.state_age_ms[1], m.state_age_ms[2]);
+    if (m.round_trip_ms[2] > 0.0f) {
+      used += std::snprintf(text + used, sizeof text - used, ", round trip p50 %.2f / p99 %.2f / max %.2f ms",
+                            m.round_trip_ms[0], m.round_trip_ms[1], m.round_trip_ms[2]);
+    } else {
+      used += std::snprintf(text + used, sizeof text - used, ", no round trip (the link echoes nothing)");
+    }
+    std::snprintf(text + used, sizeof text - used, ", %lld losses, %lld states refused, %lld frames late",
                   static_cast<long long>(m.link_losses), static_cast<long long>(m.states_refused),
                   static_cast<long long>(m.frames_late));
   } else {

@@ -32,6 +32,11 @@ struct RobotLinkReport {
   std::uint64_t losses = 0;             // since start: times the link was lost
   std::uint64_t states_refused = 0;     // since start: states that repeated the one before or jumped
   std::uint64_t frames_late = 0;        // since start: frames the robot reported late or left a cycle untaken
+  // where the link shows when the robot took a frame (the ZsiBot's flags): from writing a frame to
+  // the first state the robot published after taking it, the newest one measured, and how many so
+  // far (0: the link cannot tell, as the motor SDK, which echoes nothing)
+  double round_trip_s = 0.0;
+  std::uint64_t round_trips = 0;
 };
 
 }  // namespace cerebellum

@@ -39,6 +39,10 @@ void LcmDiagnosticsPublisher::on_cycle(const CycleRecord& record) {
   Window& w = filling_;
   if (record.loop_period_s > 0.0) w.period_s[w.periods++] = record.loop_period_s;
   w.state_age_s[w.ticks] = record.link.state_age_s;
+  if (record.link.round_trips != round_trips_seen_) {  // a new measurement (at most one a tick is kept)
+    round_trips_seen_ = record.link.round_trips;
+    w.round_trip_s[w.round_trips++] = record.link.round_trip_s;
+  }
   ++w.ticks;
   w.late_substeps = record.late_substeps;
   w.link = record.link;
@@ -47,6 +51,7 @@ void LcmDiagnosticsPublisher::on_cycle(const CycleRecord& record) {
   windows_.try_push(w);  // a full ring drops this second's figures (counted by the ring)
   w.ticks = 0;
   w.periods = 0;
+  w.round_trips = 0;
 }
 
 void LcmDiagnosticsPublisher::publish(Window& window) {
@@ -59,6 +64,7 @@ void LcmDiagnosticsPublisher::publish(Window& window) {
   message.link = window.link.present;
   put_ms(window.link.present ? window_figures(window.state_age_s.data(), window.ticks) : WindowFigures{},
          message.state_age_ms);
+  put_ms(window_figures(window.round_trip_s.data(), window.round_trips), message.round_trip_ms);
   message.link_losses = static_cast<std::int64_t>(window.link.losses);
   message.states_refused = static_cast<std::int64_t>(window.link.states_refused);
   message.frames_late = static_cast<std::int64_t>(window.link.frames_late);

@@ -1,9 +1,8 @@
 // The MC's own figures, once a second, for `cerebellum status`: the loop's period (p50 / p99 / max
 // of the wall time between ticks, while paced) and the real robot's link (the state's age when a
-// tick read it, losses, refused states, late frames), on channel mc_diagnostics. An observer: it
-// copies each tick's figures from the cycle record into a window; the window goes to its thread,
-// which computes the percentiles and publishes. Neither vendor link echoes a frame, so the MC
-// cannot measure a round trip on a robot: the stacked pair's benchmark does (bench/stack_round_trip).
+// tick read it, the round trip where the link shows it, losses, refused states, late frames), on
+// channel mc_diagnostics. An observer: it copies each tick's figures from the cycle record into a
+// window; the window goes to its thread, which computes the percentiles and publishes.
 #pragma once
 
 #include <array>
@@ -47,6 +46,8 @@ class LcmDiagnosticsPublisher final : public CycleObserver {
     std::size_t periods = 0;  // ticks with a loop period (paced, not the first)
     std::array<double, kMaxTicksPerWindow> period_s{};
     std::array<double, kMaxTicksPerWindow> state_age_s{};
+    std::size_t round_trips = 0;  // new round-trip measurements in the window
+    std::array<double, kMaxTicksPerWindow> round_trip_s{};
     std::uint64_t late_substeps = 0;
     RobotLinkReport link;
   };
@@ -58,6 +59,7 @@ class LcmDiagnosticsPublisher final : public CycleObserver {
   std::size_t ticks_per_window_;
   // loop thread only
   Window filling_;
+  std::uint64_t round_trips_seen_ = 0;
   // loop -> publisher thread: a window a second, copied (no allocation in the loop)
   SpscRing<Window, 4> windows_;
   std::uint64_t published_ = 0;  // publisher thread (read after finish)

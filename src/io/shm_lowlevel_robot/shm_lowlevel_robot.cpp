@@ -66,6 +66,11 @@ void ShmLowLevelRobot::take_state() {
   if (!spline_ || !imu_) return;
   const double now_s = wall_seconds();
   listening_.step(now_s);
+  // the round trip: has the daemon taken the frame being timed (its flag cleared)?
+  if (timed_frame_sent_s_ >= 0.0 && !timed_frame_taken_ &&
+      atomic_at<std::uint32_t>(spline(), kCommandFlagOffset).load(std::memory_order_acquire) == 0) {
+    timed_frame_taken_ = true;
+  }
   const std::atomic_ref<std::uint32_t> flag = atomic_at<std::uint32_t>(spline(), kStateFlagOffset);
   // the flag's acquire pairs with the daemon's release: the legs and the IMU before it are complete
   if (flag.load(std::memory_order_acquire) == 0) return;
@@ -84,6 +89,14 @@ void ShmLowLevelRobot::take_state() {
   }
   flag.store(0, std::memory_order_relaxed);
   ++counts_.states_taken;
+  // a state seen at or after the poll that found the frame taken: the daemon's answer to it (to
+  // the poll's millisecond)
+  if (timed_frame_taken_) {
+    round_trip_s_ = now_s - timed_frame_sent_s_;
+    ++round_trips_;
+    timed_frame_sent_s_ = -1.0;
+    timed_frame_taken_ = false;
+  }
   watch_.take_joints(decode_shm_legs(legs), now_s);
   if (!have_imu_timestamp_ || imu_timestamp != imu_timestamp_) {
     watch_.take_imu(decode_shm_imu(imu_frame), now_s);
@@ -108,13 +121,17 @@ void ShmLowLevelRobot::send_frame() {
   std::memcpy(spline()->cmd.legs, legs, sizeof legs);
   flag.store(1, std::memory_order_release);
   ++counts_.frames_written;
+  if (timed_frame_sent_s_ < 0.0) {  // one frame timed at a time
+    timed_frame_sent_s_ = wall_seconds();
+    timed_frame_taken_ = false;
+  }
   sent_at_s_ = robot_time_s_;
 }
 
 RobotLinkReport ShmLowLevelRobot::link_report() const {
   const RobotLinkStatus& s = watch_.status();
   return RobotLinkReport{true, s.link_silent_s, s.link_losses, s.repeated_states + s.jumped_states,
-                         counts_.frames_late};
+                         counts_.frames_late, round_trip_s_, round_trips_};
 }
 
 SensorFrame ShmLowLevelRobot::read() {

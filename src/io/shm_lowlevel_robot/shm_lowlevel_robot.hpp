@@ -95,6 +95,12 @@ class ShmLowLevelRobot final : public HardwareBackend {
   bool have_command_ = false;
   double sent_at_s_ = -1.0;  // robot time of the newest frame written
   int waits_in_row_ = 0;     // attempts in a row that found the last frame not taken
+  // the round trip in measurement: when the frame went out (wall s; < 0: none), whether the
+  // daemon has taken it; the newest measured and the count
+  double timed_frame_sent_s_ = -1.0;
+  bool timed_frame_taken_ = false;
+  double round_trip_s_ = 0.0;
+  std::uint64_t round_trips_ = 0;
   std::uint64_t imu_timestamp_ = 0;
   bool have_imu_timestamp_ = false;
   double robot_time_s_ = 0.0;
