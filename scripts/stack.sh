@@ -4,7 +4,10 @@
 # through it and serving the high-level interfaces (config/stack/cyberdog2-motor-sdk.yaml). Both
 # run paced by the wall clock in one private network namespace (scripts/netns_run.sh): nothing
 # reaches a real interface.
-#   scripts/stack.sh [--cerebellum EXE] [--logs DIR] [COMMAND [ARGS...]]
+#   scripts/stack.sh [--cerebellum EXE] [--b-cerebellum EXE [--b-emulator PROGRAM]] [--logs DIR]
+#                    [COMMAND [ARGS...]]
+# --b-cerebellum: B's own program (default: A's), e.g. the robot's aarch64 build run under
+# --b-emulator qemu-aarch64-static (docs/robot-build.md)
 # With a command: runs it in the namespace once both are ready, with STACK_A_PID, STACK_B_PID,
 # STACK_A_LOG and STACK_B_LOG in its environment, then stops both and exits with its status.
 # Without one: runs until Ctrl-C. e.g. scripts/stack.sh bash  (then: cerebellum cmd stand --ttl 0)
@@ -16,12 +19,16 @@ if [[ "${CEREBELLUM_IN_NETNS:-}" != 1 ]]; then
 fi
 
 exe=""
+b_exe=""
+b_emulator=()
 logs=""
 while [[ $# -gt 0 ]]; do
   case $1 in
     --cerebellum) exe=$2; shift 2 ;;
+    --b-cerebellum) b_exe=$2; shift 2 ;;
+    --b-emulator) b_emulator=("$2"); shift 2 ;;
     --logs) logs=$2; shift 2 ;;
-    --help|-h) sed -n '2,10p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --help|-h) sed -n '2,13p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) break ;;
   esac
 done
@@ -31,6 +38,8 @@ if [[ -z "$exe" ]]; then
   done
 fi
 [[ -x "$exe" ]] || { echo "stack.sh: no cerebellum program (give --cerebellum EXE)" >&2; exit 2; }
+b_exe=${b_exe:-$exe}
+[[ -x "$b_exe" ]] || { echo "stack.sh: no program $b_exe for B (--b-cerebellum)" >&2; exit 2; }
 logs=${logs:-$(mktemp -d /tmp/cerebellum-stack.XXXXXX)}
 mkdir -p "$logs"
 a_log="$logs/a-sim.log"
@@ -66,7 +75,7 @@ trap 'exit 130' INT TERM
 a_pid=$!
 wait_ready "$a_pid" "$a_log" "MC A (cerebellum sim)" 60
 # B activates A's motor mode before its ready line: the robot lies 2 s first
-"$exe" run --config "$root/config/stack/cyberdog2-motor-sdk.yaml" > "$b_log" 2>&1 &
+"${b_emulator[@]}" "$b_exe" run --config "$root/config/stack/cyberdog2-motor-sdk.yaml" > "$b_log" 2>&1 &
 b_pid=$!
 wait_ready "$b_pid" "$b_log" "MC B (cerebellum run)" 60
 echo "stack.sh: A (pid $a_pid, log $a_log) and B (pid $b_pid, log $b_log) ready"
