@@ -1,10 +1,11 @@
 #!/usr/bin/env bash
 # LCM's Python module for Debian's python3. Debian packages LCM's C, C++, Java and Lua bindings but
 # not the Python one, and PyPI is out of reach: build LCM's own lcm-python/ from the orig tarball of
-# Debian's `lcm` source package (the version of the installed liblcm-dev) and install it where
-# Debian's python3 finds it. Two fixes to the 1.3.1 sources for Python 3.11: assigning to Py_TYPE()
-# is forbidden (Py_SET_TYPE replaces it), and "#" argument formats need PY_SSIZE_T_CLEAN with
-# Py_ssize_t lengths (as later LCM releases do). Safe to run twice: skips when `import lcm` works.
+# Debian's `lcm` source package (the version of the installed liblcm-dev, downloaded by
+# scripts/debian_orig_tarball.sh) and install it where Debian's python3 finds it. Two fixes to the
+# 1.3.1 sources for Python 3.11: assigning to Py_TYPE() is forbidden (Py_SET_TYPE replaces it), and
+# "#" argument formats need PY_SSIZE_T_CLEAN with Py_ssize_t lengths (as later LCM releases do).
+# Safe to run twice: skips when `import lcm` works.
 set -euo pipefail
 python=/usr/bin/python3
 if "$python" -c "import lcm; lcm.LCM" 2>/dev/null; then
@@ -14,29 +15,9 @@ fi
 sudo_cmd=()
 [[ $(id -u) -eq 0 ]] || sudo_cmd=(sudo)
 version=$(dpkg-query -W -f='${source:Version}' liblcm-dev)   # e.g. 1.3.1+repack1-3
-upstream=${version%-*}                                       # 1.3.1+repack1
 work=$(mktemp -d)
-chmod 755 "$work"  # apt downloads as _apt
 trap 'rm -rf "$work"' EXIT
-# a deb-src list of our own, used only for this download: apt's system lists stay as they are
-mkdir -p "$work/parts" "$work/lists/partial"
-cat > "$work/parts/debian-src.sources" <<SOURCES
-Types: deb-src
-URIs: http://deb.debian.org/debian
-Suites: $(. /etc/os-release && echo "$VERSION_CODENAME")
-Components: main
-Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
-SOURCES
-apt_opts=(-o Dir::Etc::SourceList=/dev/null -o "Dir::Etc::SourceParts=$work/parts"
-          -o "Dir::State::Lists=$work/lists" -o Dir::Cache::pkgcache= -o Dir::Cache::srcpkgcache=)
-apt-get "${apt_opts[@]}" -qq update
-# only the orig tarball is needed; the Debian patch archive may be missing on a mirror
-(cd "$work" && apt-get "${apt_opts[@]}" -qq source --download-only "lcm=$version" >/dev/null 2>&1) || true
-tarball=$(ls "$work"/lcm_"$upstream".orig.tar.* 2>/dev/null | head -1)
-if [[ -z "$tarball" ]]; then
-  echo "install_lcm_python: could not download the orig tarball of Debian's lcm $version" >&2
-  exit 1
-fi
+tarball=$("$(dirname "$0")/debian_orig_tarball.sh" lcm "$version" "$work")
 tar -xf "$tarball" -C "$work"
 src=$(ls -d "$work"/lcm-*/lcm-python)
 sed -i 's/Py_TYPE(\(&[A-Za-z_]*\)) = &PyType_Type;/Py_SET_TYPE(\1, \&PyType_Type);/' "$src/module.c"
@@ -52,4 +33,4 @@ target=/usr/lib/python3/dist-packages/lcm
 "${sudo_cmd[@]}" mkdir -p "$target"
 "${sudo_cmd[@]}" install -m 0644 "$src/lcm/__init__.py" "$target/__init__.py"
 "${sudo_cmd[@]}" install -m 0755 "$src"/lcm/_lcm*.so "$target/"
-"$python" -c "import lcm; lcm.LCM" && echo "install_lcm_python: lcm $upstream installed in $target"
+"$python" -c "import lcm; lcm.LCM" && echo "install_lcm_python: lcm ${version%-*} installed in $target"

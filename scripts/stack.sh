@@ -5,7 +5,10 @@
 # (config/stack/ROBOT.yaml: cyberdog2-motor-sdk, the default, or zsibot-shm). Both run paced by the
 # wall clock in one private network namespace (scripts/netns_run.sh): nothing reaches a real
 # interface.
-#   scripts/stack.sh [--robot ROBOT] [--cerebellum EXE] [--logs DIR] [COMMAND [ARGS...]]
+#   scripts/stack.sh [--robot ROBOT] [--cerebellum EXE] [--b-cerebellum EXE [--b-emulator PROGRAM]]
+#                    [--logs DIR] [COMMAND [ARGS...]]
+# --b-cerebellum: B's own program (default: A's), e.g. the robot's aarch64 build run under
+# --b-emulator qemu-aarch64-static (docs/robot-build.md)
 # With a command: runs it in the namespace once both are ready, with STACK_A_PID, STACK_B_PID,
 # STACK_A_LOG, STACK_B_LOG and STACK_ROBOT in its environment, then stops both and exits with its status.
 # Without one: runs until Ctrl-C. e.g. scripts/stack.sh bash  (then: cerebellum cmd stand --ttl 0)
@@ -17,14 +20,18 @@ if [[ "${CEREBELLUM_IN_NETNS:-}" != 1 ]]; then
 fi
 
 exe=""
+b_exe=""
+b_emulator=()
 logs=""
 robot=cyberdog2-motor-sdk
 while [[ $# -gt 0 ]]; do
   case $1 in
     --robot) robot=$2; shift 2 ;;
     --cerebellum) exe=$2; shift 2 ;;
+    --b-cerebellum) b_exe=$2; shift 2 ;;
+    --b-emulator) b_emulator=("$2"); shift 2 ;;
     --logs) logs=$2; shift 2 ;;
-    --help|-h) sed -n '2,12p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --help|-h) sed -n '2,15p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) break ;;
   esac
 done
@@ -39,6 +46,8 @@ if [[ "$robot" == sim || ! -f "$b_config" ]]; then
   echo "stack.sh: --robot $robot: no config/stack/$robot.yaml for MC B (cyberdog2-motor-sdk or zsibot-shm)" >&2
   exit 2
 fi
+b_exe=${b_exe:-$exe}
+[[ -x "$b_exe" ]] || { echo "stack.sh: no program $b_exe for B (--b-cerebellum)" >&2; exit 2; }
 logs=${logs:-$(mktemp -d /tmp/cerebellum-stack.XXXXXX)}
 mkdir -p "$logs"
 a_log="$logs/a-sim.log"
@@ -74,7 +83,7 @@ trap 'exit 130' INT TERM
 a_pid=$!
 wait_ready "$a_pid" "$a_log" "MC A (cerebellum sim)" 60
 # B activates the robot before its ready line (a CyberDog2's motor mode: the robot lies 2 s first)
-"$exe" run --config "$b_config" > "$b_log" 2>&1 &
+"${b_emulator[@]}" "$b_exe" run --config "$b_config" > "$b_log" 2>&1 &
 b_pid=$!
 wait_ready "$b_pid" "$b_log" "MC B (cerebellum run)" 60
 echo "stack.sh: A (pid $a_pid, log $a_log) and B ($robot, pid $b_pid, log $b_log) ready"
