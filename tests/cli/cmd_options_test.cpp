@@ -184,7 +184,10 @@ TEST(StatusOptions, CountRateTimeoutTtl) {
   EXPECT_EQ(status_error({"--count", "0"}), "status: --count must be an integer in [1, 1000000000], got '0'");
   EXPECT_EQ(status_error({"--rate", "100"}), "status: --rate must be a number in [0.1, 50] Hz, got '100'");
   EXPECT_EQ(status_error({"--speed", "1"}),
-            "status: unknown option '--speed' (accepted: --count, --rate, --timeout, --ttl)");
+            "status: unknown option '--speed' (accepted: --count, --diagnostics, --rate, --timeout, --ttl)");
+  EXPECT_FALSE(defaults.diagnostics);
+  EXPECT_TRUE(parse_status_options({"--diagnostics", "--count", "2"}).diagnostics) << "a flag: it takes no value";
+  EXPECT_EQ(parse_status_options({"--diagnostics", "--count", "2"}).count.value(), 2);
 }
 
 TEST(HighLevelUrl, InterfaceGroupWithPortAndTtl) {
