@@ -4,23 +4,9 @@
 #include <cstring>
 
 #include "io/common/wall_clock.hpp"
+#include "io/shm_lowlevel/shm_flags.hpp"
 
 namespace cerebellum {
-namespace {
-
-constexpr std::size_t kStateFlagsOffset =
-    offsetof(spline_data_t, state) + offsetof(spline_state_data_t, consumer_flags);
-constexpr std::size_t kCommandFlagOffset = offsetof(spline_data_t, cmd) + offsetof(spline_cmd_data_t, consumer_flags) +
-                                           sizeof(std::uint32_t) * CONSUMER_CONTROL;
-static_assert(kStateFlagsOffset % alignof(std::uint32_t) == 0 && kCommandFlagOffset % alignof(std::uint32_t) == 0);
-static_assert(offsetof(nav_imu_t, timestamp) % alignof(std::size_t) == 0);
-
-template <typename T>
-std::atomic_ref<T> atomic_at(void* base, std::size_t offset_bytes) {
-  return std::atomic_ref<T>(*reinterpret_cast<T*>(static_cast<char*>(base) + offset_bytes));
-}
-
-}  // namespace
 
 ShmLowLevelPort::ShmLowLevelPort(const ShmLowLevelConfig& config, const GuardLimits& limits, std::FILE* log)
     : mode_(config.mode),
@@ -45,18 +31,6 @@ ShmLowLevelPort::~ShmLowLevelPort() {
   std::fflush(log_file_);
 }
 
-std::atomic_ref<std::uint32_t> ShmLowLevelPort::state_flag(std::size_t consumer) const {
-  return atomic_at<std::uint32_t>(spline(), kStateFlagsOffset + sizeof(std::uint32_t) * consumer);
-}
-
-std::atomic_ref<std::uint32_t> ShmLowLevelPort::command_flag() const {
-  return atomic_at<std::uint32_t>(spline(), kCommandFlagOffset);
-}
-
-std::atomic_ref<std::size_t> ShmLowLevelPort::imu_timestamp() const {
-  return atomic_at<std::size_t>(imu(), offsetof(nav_imu_t, timestamp));
-}
-
 bool ShmLowLevelPort::on_substep(const SensorFrame& frame, JointCommand& command) {
   return source_.run_cycle(frame, command);
 }
@@ -71,11 +45,11 @@ bool ShmLowLevelPort::take_command(JointCommand& command) {
   };
   const double now_s = wall_seconds();
   // the flag's acquire pairs with the client's release: its legs are complete
-  if (command_flag().load(std::memory_order_acquire) != 0) {
+  if (shm_command_flag(spline()).load(std::memory_order_acquire) != 0) {
     leg_control_t legs[kNumLegs];
     std::memcpy(legs, spline()->cmd.legs, sizeof(legs));
     // the release orders the copy before the clear: a client that sees 0 may write the next frame
-    command_flag().store(0, std::memory_order_release);
+    shm_command_flag(spline()).store(0, std::memory_order_release);
     receive_through(link_faults_, reinterpret_cast<const std::uint8_t*>(legs), sizeof(legs), now_s, deliver);
   }
   release_due(link_faults_, now_s, deliver);
@@ -89,16 +63,16 @@ void ShmLowLevelPort::publish_state(const SensorFrame& frame) {
   encode_shm_imu(frame, imu_frame_);
   // a sequence lock with the flags as the "complete" mark and the IMU timestamp as the
   // generation: clear the flags, write the body, then the timestamp and the flags (release)
-  state_flag(CONSUMER_CONTROL).store(0, std::memory_order_relaxed);
-  state_flag(CONSUMER_OTHER).store(0, std::memory_order_relaxed);
+  shm_state_flag(spline(), CONSUMER_CONTROL).store(0, std::memory_order_relaxed);
+  shm_state_flag(spline(), CONSUMER_OTHER).store(0, std::memory_order_relaxed);
   std::atomic_thread_fence(std::memory_order_release);
   std::memcpy(spline()->state.legs, state_legs_, sizeof(state_legs_));
   constexpr std::size_t kImuBodyOffset = offsetof(nav_imu_t, acc);
   std::memcpy(reinterpret_cast<char*>(imu()) + kImuBodyOffset,
               reinterpret_cast<const char*>(&imu_frame_) + kImuBodyOffset, sizeof(nav_imu_t) - kImuBodyOffset);
-  imu_timestamp().store(imu_frame_.timestamp, std::memory_order_release);
-  state_flag(CONSUMER_CONTROL).store(1, std::memory_order_release);
-  state_flag(CONSUMER_OTHER).store(1, std::memory_order_release);
+  shm_imu_timestamp(imu()).store(imu_frame_.timestamp, std::memory_order_release);
+  shm_state_flag(spline(), CONSUMER_CONTROL).store(1, std::memory_order_release);
+  shm_state_flag(spline(), CONSUMER_OTHER).store(1, std::memory_order_release);
 }
 
 }  // namespace cerebellum

@@ -59,10 +59,6 @@ class ShmLowLevelPort final : public ShmLink, public SubstepParticipant {
  private:
   spline_data_t* spline() const { return static_cast<spline_data_t*>(spline_.data()); }
   nav_imu_t* imu() const { return static_cast<nav_imu_t*>(imu_.data()); }
-  // the 4-byte flags and the 8-byte timestamp are naturally aligned inside the packed layout
-  std::atomic_ref<std::uint32_t> state_flag(std::size_t consumer) const;
-  std::atomic_ref<std::uint32_t> command_flag() const;
-  std::atomic_ref<std::size_t> imu_timestamp() const;
 
   unsigned mode_;
   // first: it checks the configuration before any object is created; it only keeps *this as its

@@ -2,12 +2,12 @@
 
 #include <chrono>
 #include <cstddef>
-#include <cstring>
 #include <thread>
 
 #include "io/common/wall_clock.hpp"
 #include "io/robot_link/robot_link_log.hpp"
 #include "io/shm_lowlevel/shm_codec.hpp"
+#include "io/shm_lowlevel/shm_flags.hpp"
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
 #include "safety/damping_command.hpp"
 
@@ -23,19 +23,6 @@ constexpr int kLinkLinesPerSecond = 4;
 constexpr double kDaemonPeriodS = 0.001;
 // the log thread's nap between looks at the statuses (the loop pushes one each 2 ms tick)
 constexpr auto kLogNap = std::chrono::milliseconds(5);
-
-// the 4-byte flags and the 8-byte timestamp are naturally aligned inside the packed layout
-constexpr std::size_t kStateFlagOffset = offsetof(spline_data_t, state) + offsetof(spline_state_data_t, consumer_flags) +
-                                         sizeof(std::uint32_t) * CONSUMER_CONTROL;
-constexpr std::size_t kCommandFlagOffset =
-    offsetof(spline_data_t, cmd) + offsetof(spline_cmd_data_t, consumer_flags) + sizeof(std::uint32_t) * CONSUMER_CONTROL;
-static_assert(kStateFlagOffset % alignof(std::uint32_t) == 0 && kCommandFlagOffset % alignof(std::uint32_t) == 0);
-static_assert(offsetof(nav_imu_t, timestamp) % alignof(std::uint64_t) == 0);
-
-template <typename T>
-std::atomic_ref<T> atomic_at(void* base, std::size_t offset_bytes) {
-  return std::atomic_ref<T>(*reinterpret_cast<T*>(static_cast<char*>(base) + offset_bytes));
-}
 
 }  // namespace
 
@@ -67,27 +54,20 @@ void ShmLowLevelRobot::take_state() {
   const double now_s = wall_seconds();
   listening_.step(now_s);
   // the round trip: has the daemon taken the frame being timed (its flag cleared)?
-  if (timed_frame_sent_s_ >= 0.0 && !timed_frame_taken_ &&
-      atomic_at<std::uint32_t>(spline(), kCommandFlagOffset).load(std::memory_order_acquire) == 0) {
+  if (timed_frame_sent_s_ >= 0.0 && !timed_frame_taken_ && !lowlevel_command_pending(spline())) {
     timed_frame_taken_ = true;
   }
-  const std::atomic_ref<std::uint32_t> flag = atomic_at<std::uint32_t>(spline(), kStateFlagOffset);
-  // the flag's acquire pairs with the daemon's release: the legs and the IMU before it are complete
-  if (flag.load(std::memory_order_acquire) == 0) return;
+  // the SDK's fenced read (lowlevel_sync.h): a flag still set and the IMU's timestamp unchanged
+  // after the copy is one whole frame; a flag that was set and a read that fails is a copy the
+  // daemon rewrote under it
+  const bool flagged = shm_state_flag(spline(), CONSUMER_CONTROL).load(std::memory_order_acquire) != 0;
+  if (!flagged) return;
   leg_state_t legs[kNumLegs];
-  std::memcpy(legs, spline()->state.legs, sizeof legs);
-  const std::uint64_t imu_timestamp =
-      atomic_at<std::uint64_t>(imu(), offsetof(nav_imu_t, timestamp)).load(std::memory_order_acquire);
   nav_imu_t imu_frame;
-  std::memcpy(&imu_frame, imu(), sizeof imu_frame);
-  // the daemon clears the flags before it writes the next state: still set after the copy, the
-  // copy is whole; gone, the daemon was writing under it
-  std::atomic_thread_fence(std::memory_order_acquire);
-  if (flag.load(std::memory_order_relaxed) == 0) {
+  if (lowlevel_read_state(spline(), imu(), CONSUMER_CONTROL, legs, &imu_frame) == 0) {
     ++counts_.torn_states;
     return;
   }
-  flag.store(0, std::memory_order_relaxed);
   ++counts_.states_taken;
   // a state seen at or after the poll that found the frame taken: the daemon's answer to it (to
   // the poll's millisecond)
@@ -98,28 +78,25 @@ void ShmLowLevelRobot::take_state() {
     timed_frame_taken_ = false;
   }
   watch_.take_joints(decode_shm_legs(legs), now_s);
-  if (!have_imu_timestamp_ || imu_timestamp != imu_timestamp_) {
+  if (!have_imu_timestamp_ || imu_frame.timestamp != imu_timestamp_) {
     watch_.take_imu(decode_shm_imu(imu_frame), now_s);
-    imu_timestamp_ = imu_timestamp;
+    imu_timestamp_ = imu_frame.timestamp;
     have_imu_timestamp_ = true;
   }
 }
 
 void ShmLowLevelRobot::send_frame() {
   if (!spline_ || !have_command_) return;
-  const std::atomic_ref<std::uint32_t> flag = atomic_at<std::uint32_t>(spline(), kCommandFlagOffset);
-  // the acquire pairs with the daemon's clear (release, after its copy): 0 means it has the frame
-  if (flag.load(std::memory_order_acquire) != 0) {
+  leg_control_t legs[kNumLegs];
+  encode_shm_command(command_, legs);
+  // the SDK's fenced write: nothing written while the daemon has not taken the last frame
+  if (lowlevel_write_command(spline(), legs) == 0) {
     ++counts_.frames_waiting;
     // the frame went out a cycle ago and is still there: the daemon skipped a cycle
     if (++waits_in_row_ == 2) ++counts_.frames_late;
     return;
   }
   waits_in_row_ = 0;
-  leg_control_t legs[kNumLegs];
-  encode_shm_command(command_, legs);
-  std::memcpy(spline()->cmd.legs, legs, sizeof legs);
-  flag.store(1, std::memory_order_release);
   ++counts_.frames_written;
   if (timed_frame_sent_s_ < 0.0) {  // one frame timed at a time
     timed_frame_sent_s_ = wall_seconds();

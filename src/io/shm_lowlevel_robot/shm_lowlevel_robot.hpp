@@ -3,13 +3,14 @@
 // socket, so no receiving thread: the loop thread itself takes the state each 1 ms (read() and
 // each substep's advance()) and writes the command frame at 1 kHz, following the flags protocol:
 // - state: when state.consumer_flags[CONSUMER_CONTROL] is set, copy state.legs and the IMU, check
-//   that the daemon did not start its next update meanwhile (it clears the flags first: a flag
-//   gone is a torn copy, not taken), then clear our flag. A flag that stays zero is a daemon that
+//   that the daemon did not start its next update meanwhile (it clears the flags first and ends with
+//   a new IMU timestamp: a flag gone or a timestamp moved is a torn copy, not taken), then clear our
+//   flag: the SDK's lowlevel_read_state (sdk/lowlevel/lowlevel_sync.h). A flag that stays zero is a daemon that
 //   stopped updating: the state watch (io/robot_link) calls the link lost after link_timeout_s.
 //   The IMU counts as fresh when its timestamp moved;
 // - commands: write cmd.legs, then set cmd.consumer_flags[CONSUMER_CONTROL] (release); a flag
 //   still set is a frame the daemon has not taken yet, so the next one waits for its next 1 ms
-//   rather than overwrite a frame the daemon may be copying (counted).
+//   rather than overwrite a frame the daemon may be copying (counted): lowlevel_write_command.
 // A small thread prints the link's events off the loop thread. Paced by the wall clock.
 #pragma once
 
@@ -101,7 +102,7 @@ class ShmLowLevelRobot final : public HardwareBackend {
   bool timed_frame_taken_ = false;
   double round_trip_s_ = 0.0;
   std::uint64_t round_trips_ = 0;
-  std::uint64_t imu_timestamp_ = 0;
+  std::size_t imu_timestamp_ = 0;
   bool have_imu_timestamp_ = false;
   double robot_time_s_ = 0.0;
   // the loop -> the log thread
