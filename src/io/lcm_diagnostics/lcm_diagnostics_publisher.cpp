@@ -69,7 +69,6 @@ void LcmDiagnosticsPublisher::publish(Window& window) {
   message.states_refused = static_cast<std::int64_t>(window.link.states_refused);
   message.frames_late = static_cast<std::int64_t>(window.link.frames_late);
   lcm_->publish(kChannel, &message);
-  ++published_;
 }
 
 }  // namespace cerebellum

@@ -12,7 +12,6 @@
 #include <string>
 
 #include "core/robot_readings.hpp"
-
 #include "core/spsc_ring.hpp"
 #include "cycle/cycle_observer.hpp"
 #include "io/common/adapter_thread.hpp"
@@ -35,7 +34,6 @@ class LcmDiagnosticsPublisher final : public CycleObserver {
   void on_cycle(const CycleRecord& record) override;
   // stops the thread (publishing a window that is already queued)
   void finish();
-  std::uint64_t published() const { return published_; }
 
   static constexpr std::size_t kMaxTicksPerWindow = 1024;
 
@@ -62,7 +60,6 @@ class LcmDiagnosticsPublisher final : public CycleObserver {
   std::uint64_t round_trips_seen_ = 0;
   // loop -> publisher thread: a window a second, copied (no allocation in the loop)
   SpscRing<Window, 4> windows_;
-  std::uint64_t published_ = 0;  // publisher thread (read after finish)
   AdapterThread thread_;
 };
 

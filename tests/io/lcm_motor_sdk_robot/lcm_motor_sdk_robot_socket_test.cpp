@@ -17,7 +17,7 @@
 #include "io/common/eventually.hpp"
 #include "io/lcm_motor_sdk/robot_state_messages.hpp"
 #include "io/lcm_motor_sdk_robot/lcm_motor_sdk_robot.hpp"
-#include "io/robot_link/lying_joints.hpp"
+#include "io/robot_link/lying_robot.hpp"
 
 namespace cerebellum {
 namespace {

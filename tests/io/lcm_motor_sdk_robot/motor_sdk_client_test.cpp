@@ -10,17 +10,10 @@
 #include "core/robot_model.hpp"
 #include "io/lcm_motor_sdk/motor_sdk_wire.hpp"
 #include "io/lcm_motor_sdk/robot_state_messages.hpp"
-#include "io/robot_link/lying_joints.hpp"
+#include "io/robot_link/lying_robot.hpp"
 
 namespace cerebellum {
 namespace {
-
-// a healthy robot lying still, as its spi_data reads
-JointReading lying_joints() {
-  JointReading joints;
-  joints.q = lying_joint_angles();
-  return joints;
-}
 
 // a stiff command holding the lying pose
 JointCommand holding_command() {
@@ -37,18 +30,6 @@ bool all_zero(const JointCommand& frame) {
   }
   return true;
 }
-
-// a receiver that has listened without a pause since since_s, its newest step at until_s
-ListeningWindow listened(double until_s, double since_s = 0.0) { return ListeningWindow{since_s, until_s}; }
-
-// a live robot's state at received_s: its values change with time, as a real one's noise makes
-// them (two equal states in a row are a stuck sender, not news)
-JointReading live_joints(double received_s) {
-  JointReading joints = lying_joints();
-  joints.qd[0] = received_s;
-  return joints;
-}
-ImuReading live_imu(double received_s) { return ImuReading{{1.0, 0.0, 0.0, 0.0}, {0.0, 0.0, received_s}, {0.0, 0.0, 9.81}}; }
 
 // the client with fresh joints and IMU at time now_s on the link's clock
 MotorSdkClient heard_client(double now_s = 0.0) {
