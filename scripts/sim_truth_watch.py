@@ -7,7 +7,9 @@ for judging a client program on what the simulated robot really did, not on the 
 Runs until SIGINT / SIGTERM, or until no message arrived for --idle seconds after the first one
 (the simulation stopped), then prints one summary line and the final state as KEY=VALUE lines
 (final_x_m, final_y_m, final_height_m, final_tilt_deg, final_feet_down, lowest_height_m,
-highest_height_m, largest_tilt_deg, messages).
+highest_height_m, largest_tilt_deg, largest_low_tilt_deg, messages). largest_low_tilt_deg is the
+largest tilt while the trunk was below --low-height-m: a robot on its side or back is low and
+tilted, one standing on its hind feet on purpose (mode 64) is tilted but high.
 """
 import argparse
 import math
@@ -31,6 +33,8 @@ def main():
     parser = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     parser.add_argument("--url", default="udpm://239.255.76.67:7667?ttl=0", help="the odometry URL of the sim")
     parser.add_argument("--idle", type=float, default=1.5, help="seconds of silence that end the watch")
+    parser.add_argument("--low-height-m", type=float, default=0.15,
+                        help="below this trunk height a tilt counts in largest_low_tilt_deg")
     args = parser.parse_args()
 
     stop = []
@@ -68,6 +72,7 @@ def main():
         "lowest_height_m": f"{min(m.position[2] for m in messages):.3f}",
         "highest_height_m": f"{max(m.position[2] for m in messages):.3f}",
         "largest_tilt_deg": f"{max(tilt_deg(m.quaternion) for m in messages):.1f}",
+        "largest_low_tilt_deg": f"{max([tilt_deg(m.quaternion) for m in messages if m.position[2] < args.low_height_m] + [0.0]):.1f}",
     }
     print(f"sim_truth: {len(messages)} messages over {span_s:.2f} s of simulated time; final height "
           f"{summary['final_height_m']} m, tilt {summary['final_tilt_deg']} deg, feet down (FR FL RR RL) {feet}")

@@ -89,9 +89,22 @@ wait_ready "$b_pid" "$b_log" "MC B (cerebellum run)" 60
 echo "stack.sh: A (pid $a_pid, log $a_log) and B ($robot, pid $b_pid, log $b_log) ready"
 
 export STACK_A_PID=$a_pid STACK_B_PID=$b_pid STACK_A_LOG=$a_log STACK_B_LOG=$b_log STACK_ROBOT=$robot
+# note_logs: each MC's log without its healthy once-a-second state lines, for a failed run's reader
+note_logs() {
+  for side in "A:$a_log" "B:$b_log"; do
+    echo "stack.sh: ${side%%:*}'s log (${side#*:}), all but the healthy state lines, last 40:"
+    awk '/^    (FR|FL|RR|RL) q=/ { next } /^t= / && /guard=0x00/ && !/PROTECTED/ { next } { print "  | " $0 }' \
+      "${side#*:}" | tail -40
+  done
+}
 if [[ $# -gt 0 ]]; then
   status=0
   "$@" || status=$?
+  if [[ $status -ne 0 ]]; then
+    stop_both  # their closing counters first
+    a_pid="" b_pid=""
+    note_logs
+  fi
   exit "$status"
 fi
 wait "$b_pid"

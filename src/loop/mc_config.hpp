@@ -8,6 +8,7 @@
 #include "loop/config_error.hpp"
 #include "loop/realtime_config.hpp"
 #include "loop/robot_kind.hpp"
+#include "backend/latent_link_backend.hpp"
 #include "backend/mujoco_backend.hpp"
 #include "control/stand_up_controller.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
@@ -42,6 +43,7 @@ struct McConfig {
   LocomotionStand locomotion_stand = LocomotionStand::Mpc;
   RobotKind robot_kind = RobotKind::Sim;  // robot.kind
   MujocoBackendConfig robot;               // the simulation (and the model every kind reads)
+  LinkLatencyTicks simulated_link_latency; // robot.command_latency_ticks, robot.state_latency_ticks
   MotorSdkRobotConfig motor_sdk_robot;     // robot.cyberdog2_motor_sdk: the CyberDog2's motor SDK link
   ShmRobotConfig shm_robot;                // robot.zsibot_shm: the ZsiBot daemon's shared memory
   double loop_period_s = 0.002;

@@ -19,9 +19,23 @@ namespace fs = std::filesystem;
 constexpr const char* kMotorSdkSection = "cyberdog2_motor_sdk";
 constexpr const char* kShmSection = "zsibot_shm";
 // the simulation's own keys: a real robot has no model to load nor a pose to start in
-const std::set<std::string> kSimulationKeys{"initial_pose", "initial_height_m", "sensor_noise", "seed", "terrain"};
+const std::set<std::string> kSimulationKeys{"initial_pose", "initial_height_m", "sensor_noise", "seed", "terrain",
+                                            "command_latency_ticks", "state_latency_ticks"};
+// a link slower than 50 ms has lost the robot (the link watch's limit, robot.*.link_timeout_s)
+constexpr unsigned kLatencyTicksMax = 25;
 
-void read_simulation(const SectionReader& section, const std::string& base_dir, MujocoBackendConfig& robot) {
+void read_latency(const SectionReader& section, const char* key, int& ticks) {
+  unsigned value = static_cast<unsigned>(ticks);
+  section.unsigned_integer(key, value);
+  if (value > kLatencyTicksMax) {
+    section.fail(std::string("robot.") + key,
+                 "must be at most " + std::to_string(kLatencyTicksMax) + " ticks, got " + std::to_string(value));
+  }
+  ticks = static_cast<int>(value);
+}
+
+void read_simulation(const SectionReader& section, const std::string& base_dir, MujocoBackendConfig& robot,
+                     LinkLatencyTicks& latency) {
   if (section.has("terrain")) {
     std::string terrain;
     section.text("terrain", terrain);
@@ -39,6 +53,8 @@ void read_simulation(const SectionReader& section, const std::string& base_dir, 
   section.number("initial_height_m", robot.initial_height_m, 0.05, 2.0);
   section.flag("sensor_noise", robot.noise.enabled);
   section.unsigned_integer("seed", robot.noise.seed);
+  read_latency(section, "command_latency_ticks", latency.command_ticks);
+  read_latency(section, "state_latency_ticks", latency.state_ticks);
 }
 
 void read_motor_sdk_robot(const YAML::Node& node, const std::string& path, MotorSdkRobotConfig& robot) {
@@ -89,7 +105,8 @@ void read_robot_section(const YAML::Node& node, const std::string& path, const s
                         McConfig& config) {
   const SectionReader section(node, path, "robot",
                               {"kind", "model", "initial_pose", "initial_height_m", "sensor_noise", "seed",
-                               "terrain", kMotorSdkSection, kShmSection});
+                               "terrain", "command_latency_ticks", "state_latency_ticks", kMotorSdkSection,
+                               kShmSection});
   std::string kind = robot_kind_name(config.robot_kind);
   section.text("kind", kind, std::set<std::string>(std::begin(kRobotKindNames), std::end(kRobotKindNames)));
   for (int k = 0; k < static_cast<int>(std::size(kRobotKindNames)); ++k) {
@@ -112,7 +129,7 @@ void read_robot_section(const YAML::Node& node, const std::string& path, const s
     }
   }
   if (config.robot_kind == RobotKind::Sim) {
-    read_simulation(section, base_dir, config.robot);
+    read_simulation(section, base_dir, config.robot, config.simulated_link_latency);
     return;
   }
   for (const std::string& key : kSimulationKeys) {

@@ -2,7 +2,8 @@
 // truth: the robot rises onto its hind feet with the trunk near vertical, holds it for the rest of
 // the command's duration, comes down and stands where a stand stands; commands that would drop
 // it are refused while it is up, damping still stops it, a silent client is damped only once it
-// is back on four feet, and a shove it cannot catch ends in damping, not flailing.
+// is back on four feet, a shove it cannot catch ends in damping, not flailing, and a link a few
+// ticks slow each way (backend/latent_link_backend, as on the stacked pair) changes none of it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -31,9 +32,14 @@ struct Outcome {
   double done_after_s = -1.0;  // the response's bar reached 100
 };
 
+McConfig with_latency(McConfig config, LinkLatencyTicks latency) {
+  config.simulated_link_latency = latency;
+  return config;
+}
+
 struct TwoLegRun {
-  explicit TwoLegRun(bool noise = false, unsigned seed = 0)
-      : mc(make_simulated_mc(testing::lying_start(noise, seed))), client(mc) {
+  explicit TwoLegRun(bool noise = false, unsigned seed = 0, LinkLatencyTicks latency = {})
+      : mc(make_simulated_mc(with_latency(testing::lying_start(noise, seed), latency))), client(mc) {
     client.run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
     // the pose hold the seed's example is in when it asks for the two-leg stand
     client.run(high_level_command(ModeId::PoseControl, 3), 1.0);
@@ -104,6 +110,27 @@ TEST(McTwoLegStand, RisesOntoItsHindFeetHoldsTheTrunkNearVerticalAndStandsAgain)
   expect_standing_again(run);
 }
 
+TEST(McTwoLegStand, RisesHoldsAndStandsAgainThroughALinkTwoTicksSlowEachWay) {
+  TwoLegRun run(false, 0, LinkLatencyTicks{2, 2});
+  const Outcome outcome = run.stand_on_two_legs(12.0);
+  EXPECT_GT(outcome.highest_elevation_rad, 1.3);
+  EXPECT_GT(outcome.upright_s, 1.0);
+  EXPECT_FALSE(outcome.front_feet_down_while_upright);
+  EXPECT_FALSE(outcome.hind_foot_up_while_upright);
+  expect_standing_again(run);
+}
+
+TEST(McTwoLegStand, HoldsALongCommandUprightThroughALinkFourTicksSlowEachWay) {
+  // 16 ms from a state to its command's effect: beyond the stacked pair's usual 2-6 ms
+  TwoLegRun run(false, 0, LinkLatencyTicks{4, 4});
+  const Outcome outcome = run.stand_on_two_legs(16.0, 14000);
+  EXPECT_GT(outcome.upright_s, 5.0);
+  EXPECT_FALSE(outcome.front_feet_down_while_upright);
+  EXPECT_FALSE(outcome.hind_foot_up_while_upright);
+  EXPECT_GT(outcome.done_after_s, 14.0);
+  expect_standing_again(run, ModeId::PoseControl);
+}
+
 TEST(McTwoLegStand, HoldsTheUprightPoseForTheRestOfALongerCommand) {
   TwoLegRun run;
   const Outcome outcome = run.stand_on_two_legs(16.0, 14000);
@@ -116,7 +143,7 @@ TEST(McTwoLegStand, HoldsTheUprightPoseForTheRestOfALongerCommand) {
 
 TEST(McTwoLegStand, AnotherModeIsRefusedWhileUprightAndDampingStillStopsIt) {
   TwoLegRun run;
-  run.stand_on_two_legs(5.5);  // up on the hind feet
+  run.stand_on_two_legs(5.5, 12000);  // up on the hind feet, its hold lasting well past the checks
   ASSERT_GT(truth_elevation(run.mc.simulation().ground_truth()), 1.2);
   run.client.run(high_level_command(ModeId::PoseControl, 0), 0.5);
   EXPECT_EQ(run.mc.machine().status().mode, 64);

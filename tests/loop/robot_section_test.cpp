@@ -150,6 +150,24 @@ TEST(RobotSection, TheTerrainIsReadFromItsSpecAndAFileIsFoundBesideTheConfigurat
   EXPECT_EQ(file.robot.terrain.file, path.substr(0, path.rfind('/')) + "/ground.yaml");
 }
 
+TEST(RobotSection, TheSimulatedLinkIsFastUnlessTheFileGivesItsLatencyInTicks) {
+  EXPECT_FALSE(default_config().simulated_link_latency.any());
+  const McConfig slow = load_config(write_file("robot: {command_latency_ticks: 2, state_latency_ticks: 3}\n"));
+  EXPECT_EQ(slow.simulated_link_latency.command_ticks, 2);
+  EXPECT_EQ(slow.simulated_link_latency.state_ticks, 3);
+}
+
+TEST(RobotSection, ALatencyOverFiftyMillisecondsOrNotWholeTicksIsRefused) {
+  const std::string long_one = load_error("robot: {state_latency_ticks: 26}\n");
+  EXPECT_NE(long_one.find("robot.state_latency_ticks must be at most 25 ticks, got 26"), std::string::npos)
+      << long_one;
+  const std::string fraction = load_error("robot: {command_latency_ticks: 1.5}\n");
+  EXPECT_NE(fraction.find("robot.command_latency_ticks must be an integer >= 0, got '1.5'"), std::string::npos)
+      << fraction;
+  const std::string real = load_error("robot: {kind: zsibot_shm, command_latency_ticks: 1}\n");
+  EXPECT_NE(real.find("robot.command_latency_ticks applies only to the simulated robot"), std::string::npos) << real;
+}
+
 TEST(RobotSection, AWrongTerrainIsRefusedNamingTheKeyAndTheSpecsError) {
   const std::string error = load_error("robot: {terrain: 'slope:50'}\n");
   EXPECT_NE(error.find("robot.terrain"), std::string::npos) << error;

@@ -171,9 +171,9 @@ void TwoLegStandController::balance(const RobotState& state, double s, double s_
   for (std::size_t j = 0; j < kNumJoints; ++j) {
     const double hold = a.torque_nm[j] + w * (b.torque_nm[j] - a.torque_nm[j]);
     command.q_des[j] = state.q[j];
-    command.qd_des[j] = 0.0;
+    command.qd_des[j] = reference_velocity[6 + static_cast<Eigen::Index>(j)];
     command.kp[j] = 0.0;
-    command.kd[j] = 0.0;
+    command.kd[j] = config_.balance_joint_kd;
     command.tau_ff[j] =
         std::clamp(hold - torque[static_cast<Eigen::Index>(j)], -robot::kTorqueMaxNm, robot::kTorqueMaxNm);
   }

@@ -46,9 +46,16 @@ struct TwoLegStandConfig {
   // joint PD of the crouch, of putting the front feet down and of the return to the stand
   double joint_kp = 80.0;
   double joint_kd = 2.0;
-  double front_press_m = 0.005;
-  // the balance's feedback is low-passed here (Hz): unfiltered, sensor noise made it chatter
-  double feedback_cutoff_hz = 50.0;  // the crouch's front feet this far into the ground: they bear on it
+  double front_press_m = 0.005;  // the crouch's front feet this far into the ground: they bear on it
+  // The balance's feedback is low-passed here (Hz), and the motor drivers damp each joint about
+  // the reference's rate on their own fresh encoders. Through a link a tick or more slow each way
+  // (the stacked pair, a real robot) the feedback alone set the stance legs oscillating (about
+  // 125 Hz) until the robot fell; unfiltered, sensor noise made it chatter. Chosen on the
+  // noiseless seed-0 stand with 0-6 ticks of latency each way (docs/benchmarks/
+  // two-leg-stand-latency-log.md): 10 Hz and 4 Nm s/rad hold 12 s upright at every latency there;
+  // 15 Hz failed from 3-4 ticks, 6-8 Nm s/rad made the long hold drift over.
+  double feedback_cutoff_hz = 10.0;
+  double balance_joint_kd = 4.0;
   double damping_kd = robot::kDampingKd;
   QpStandConfig stand;
 };
