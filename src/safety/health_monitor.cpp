@@ -20,8 +20,13 @@ bool HealthMonitor::imu_stuck(const RobotState& state) {
     joints_moved_ = false;
     return false;
   }
-  // a resting robot may hold its joints still too: only a frozen IMU on a moving robot is stuck
-  if (state.q != joints_) joints_moved_ = true;
+  // a resting robot may hold its joints still too: only a frozen IMU on a moving robot is stuck.
+  // Moving means a joint turned by a real angle: a still robot's readings flicker in their last
+  // digits while a quiet IMU sent as floats repeats bit for bit (the stacked pair's noiseless A
+  // protected B's standing robot so)
+  for (std::size_t i = 0; i < kNumJoints; ++i) {
+    if (std::abs(state.q[i] - joints_[i]) > limits_.imu_stuck_joint_motion_rad) joints_moved_ = true;
+  }
   return joints_moved_ && state.time_s - imu_still_since_s_ >= limits_.imu_stuck_after_s - 1e-9;
 }
 

@@ -30,6 +30,7 @@ struct HealthLimits {
   double stop_after_s = 3.0;              // damping, then the motors off
   double battery_critical_percent = 5.0;  // at or below: protection
   double imu_stuck_after_s = 0.1;         // identical IMU samples for this long
+  double imu_stuck_joint_motion_rad = 0.01;  // ... while a joint turned this far: the robot moved
   double state_invalid_after_s = 0.02;    // shorter gaps are damped by the guard alone
   double clear_after_s = 0.5;             // a protection ends once every cause has been gone this long
 };

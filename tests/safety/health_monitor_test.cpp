@@ -139,5 +139,18 @@ TEST(HealthMonitor, AFrozenImuOnAMovingRobotIsStuckButAStillRobotIsNot) {
   EXPECT_EQ(run(still, 0, 1000, frozen_imu(false)).protection, Protection::None);
 }
 
+TEST(HealthMonitor, AStillRobotWhoseJointReadingsFlickerInTheirLastDigitsKeepsItsImu) {
+  // a noiseless robot standing still: its IMU, sent as floats, repeats bit for bit while the
+  // joints' readings flicker by a millionth of a radian (the stacked pair's A, a quiet real IMU)
+  const auto flickering_joints = [](int tick) {
+    RobotState state = live_state(0);
+    state.time_s = tick * kTickS;
+    state.q.fill(tick % 2 == 0 ? 1e-6 : -1e-6);
+    return state;
+  };
+  HealthMonitor monitor;
+  EXPECT_EQ(run(monitor, 0, 1000, flickering_joints).protection, Protection::None);
+}
+
 }  // namespace
 }  // namespace cerebellum
