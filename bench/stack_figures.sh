@@ -3,9 +3,11 @@
 # (scripts/stack.sh) stands the robot and walks it at 0.5 m/s for SECONDS while `cerebellum status
 # --diagnostics` records B's once-a-second mc_diagnostics; then one line per backend: B's loop
 # period (the median of the seconds' p50, the largest p99 and max), the state's age when read, the
-# command-to-state round trip where the link shows it (the ZsiBot's flags; the motor SDK echoes
-# nothing: bench/motor_sdk_latency measures that link from a client), and the link's losses,
-# refused states and late frames. Real time on this machine: run it with nothing else running.
+# command-to-state round trip where the link shows it (the ZsiBot's flags), and the link's losses,
+# refused states and late frames. The motor SDK echoes nothing: a third listener times its frames
+# on the wire (bench/stack_wire_tap.py: each command to the first state after it, a lower bound of
+# the round trip, and each state to B's next command). Real time on this machine: run it with
+# nothing else running.
 #   bench/stack_figures.sh [SECONDS]     (default 30)
 set -euo pipefail
 root=$(cd "$(dirname "$0")/.." && pwd)
@@ -14,12 +16,19 @@ exe="$root/build/src/cli/cerebellum"
 [[ -x "$exe" ]] || { echo "stack_figures.sh: build first (scripts/build.sh)" >&2; exit 2; }
 out="$root/build/bench/results/stack_figures"
 mkdir -p "$out"
+types="$root/build/lcm/python"
 for robot in cyberdog2-motor-sdk zsibot-shm; do
+  # the motor SDK's link is also timed on the wire by a third listener (bench/stack_wire_tap.py)
+  tap=":"
+  [[ $robot == cyberdog2-motor-sdk ]] &&
+    tap="PYTHONPATH='$types' /usr/bin/python3 '$root/bench/stack_wire_tap.py' $seconds > '$out/$robot/wire.log' 2>&1"
   "$root/scripts/stack.sh" --robot "$robot" --cerebellum "$exe" --logs "$out/$robot" bash -c "
     '$exe' cmd stand --ttl 0 --hold 0 > /dev/null
     '$exe' cmd walk --ttl 0 --vx 0.5 --duration $((seconds + 2)) --hold 0 > /dev/null &
+    $tap &
     timeout -s INT $seconds '$exe' status --ttl 0 --diagnostics --rate 0.2 > '$out/$robot/status.log' || true
     wait" > "$out/$robot.txt" 2>&1 || { cat "$out/$robot.txt"; exit 1; }
+  [[ -f "$out/$robot/wire.log" ]] && sed "s/^/$robot: /" "$out/$robot/wire.log"
   /usr/bin/python3 - "$robot" "$out/$robot/status.log" <<'PY'
 import re
 import statistics
