@@ -12,10 +12,19 @@ out="$root/build/bench/results"
 mkdir -p "$out"
 filter=${1:-}
 ran=()
+chosen=()
 for exe in "$root"/build/bench/*_bench; do
   name=$(basename "$exe")
-  [[ -z "$filter" || "$name" == *"$filter"* ]] || continue
-  echo "== $name"
+  [[ -z "$filter" || "$name" == *"$filter"* ]] && chosen+=("$exe")
+done
+started=$SECONDS
+for exe in "${chosen[@]}"; do
+  name=$(basename "$exe")
+  # progress: which of how many, and the time left at the pace so far (benchmarks differ a lot)
+  done_count=${#ran[@]}
+  left=""
+  ((done_count > 0)) && left=", about $(((SECONDS - started) * (${#chosen[@]} - done_count) / done_count / 60)) min left"
+  echo "== [$((done_count + 1))/${#chosen[@]}] $name ($(((SECONDS - started) / 60)) min so far$left)"
   ran+=("$name")
   taskset -c 1 "$exe" --benchmark_out="$out/$name.json" --benchmark_out_format=json | tee "$out/$name.txt" ||
     echo "== $name: some targets were missed (see its table)"

@@ -12,6 +12,10 @@ tour=${DEMO_TOUR_BIN:-$root/build/examples/highlevel/cerebellum_demo_tour}
 mkdir -p "$out"
 sim=("$cerebellum" sim --config "$root/config/demo.yaml" --speed 1
      --record "$out/demo.mp4" --record-size "${DEMO_RECORD_SIZE:-1280x720}" --telemetry "$out/telemetry.csv")
+# the sim's output goes to its log; the bar of the video's rendering after the run comes to this
+# terminal (fd 3), and to nothing when the demo's own output is not a terminal
+exec 3>&1
+[[ -t 1 ]] && sim+=(--progress-to /dev/fd/3)
 cd "$out"
 echo "demo: starting the MC on the simulated robot (log: $out/sim.log)"
 "${sim[@]}" > "$out/sim.log" 2>&1 &
@@ -26,7 +30,7 @@ done
 status=0
 "$tour" "$@" || status=$?
 kill -INT $sim_pid
-echo "demo: the MC stopped; rendering the rest of the video (tail -f $out/sim.log)"
+echo "demo: the MC stopped; rendering the rest of the video"
 wait $sim_pid || status=$?
 trap - EXIT
 /usr/bin/python3 "$root/scripts/plot_telemetry.py" "$out/telemetry.csv" --out "$out" > "$out/plots.log" 2>&1 || status=$?

@@ -34,11 +34,18 @@ if [[ ${#ids[@]} -eq 0 ]]; then
     two_leg) ids=(0) ;;
   esac
 fi
+# the bar of each video's rendering comes to this terminal (fd 3), not into the sim's log
+exec 3>&1
+progress=()
+[[ -t 1 ]] && progress=(--progress-to /dev/fd/3)
+count=0
 for id in "${ids[@]}"; do
+  count=$((count + 1))
+  echo "[$count/${#ids[@]}] $kind $id: recording"
   config=$root/config/demo.yaml
   [[ $kind != jump || "$id" != 9 ]] || config=$root/config/demo_stair.yaml
   "$cerebellum" sim --config "$config" --speed 1 --record "$out/${kind}_$id.mp4" \
-    --record-size "${SIZE:-640x360}" > "$out/${kind}_$id.log" 2>&1 &
+    --record-size "${SIZE:-640x360}" "${progress[@]}" > "$out/${kind}_$id.log" 2>&1 &
   sim=$!
   for _ in $(seq 100); do grep -q "cerebellum ready" "$out/${kind}_$id.log" && break; sleep 0.1; done
   "$cerebellum" cmd stand --hold 0.5 > /dev/null

@@ -1,5 +1,8 @@
 #include "cli/record_tools.hpp"
 
+#include <cerrno>
+#include <cstring>
+
 #include "cli/video_progress.hpp"
 #include "loop/mc.hpp"
 
@@ -38,7 +41,20 @@ bool SimTools::finish(std::FILE* out, std::FILE* err) {
                    static_cast<double>(queued) / options_.record_fps);
       std::fflush(out);
     }
-    const VideoResult video = finish_video_showing_progress(*video_, out);
+    // the bar goes where it was asked (a terminal while out is a log), else to out
+    std::FILE* progress = out;
+    std::FILE* opened = nullptr;
+    if (!options_.progress_path.empty()) {
+      opened = std::fopen(options_.progress_path.c_str(), "w");
+      if (opened == nullptr) {
+        std::fprintf(err, "cerebellum sim: --progress-to %s: cannot open it (%s); no bar\n",
+                     options_.progress_path.c_str(), std::strerror(errno));
+      } else {
+        progress = opened;
+      }
+    }
+    const VideoResult video = finish_video_showing_progress(*video_, progress);
+    if (opened != nullptr) std::fclose(opened);
     if (video.ok) {
       std::fprintf(out, "video: %llu frames at %g fps (%llu repeated because rendering fell behind) written to %s\n",
                    static_cast<unsigned long long>(video.frames), options_.record_fps,

@@ -38,7 +38,7 @@ void check_tool_options(const SimOptions& options, const std::vector<std::string
   }
   if (given("--viewer-screenshot") && !options.viewer)
     throw std::invalid_argument("--viewer-screenshot needs --viewer");
-  for (const char* option : {"--record-fps", "--record-size"}) {
+  for (const char* option : {"--record-fps", "--record-size", "--progress-to"}) {
     if (given(option) && options.record_path.empty()) {
       throw std::invalid_argument(std::string(option) + " needs --record FILE.mp4");
     }
@@ -53,7 +53,7 @@ void check_tool_options(const SimOptions& options, const std::vector<std::string
 std::string sim_usage() {
   return "usage: cerebellum sim [--speed X|max] [--duration S] [--config FILE] [--seed N] [--faults FILE]\n"
          "                      [--terrain SPEC] [--viewer [--viewer-screenshot FILE.png]]\n"
-         "                      [--record FILE.mp4 [--record-fps F] [--record-size WxH]]\n"
+         "                      [--record FILE.mp4 [--record-fps F] [--record-size WxH] [--progress-to FILE]]\n"
          "                      [--telemetry FILE.csv [--telemetry-rate HZ]]\n"
          "  --speed X     pace at X times real time (X > 0, default 1); 'max' runs lockstep at full speed\n"
          "  --duration S  stop after S seconds of robot time (S > 0); default: run until Ctrl-C\n"
@@ -68,6 +68,8 @@ std::string sim_usage() {
          "  --record FILE.mp4  render the run headlessly into a video (ffmpeg); not with --viewer\n"
          "  --record-fps F     video frames per second of robot time (0 < F <= 240, default 30)\n"
          "  --record-size WxH  video size in pixels, even numbers, 16x16 to 3840x2160 (default 1280x720)\n"
+         "  --progress-to FILE where the bar of the video's rendering after the run is drawn, when FILE\n"
+         "                     is a terminal (e.g. /dev/tty while the output goes to a log; default: the output)\n"
          "  --telemetry FILE.csv  log time, mode, estimated and true velocity, height, torques, temperatures\n"
          "  --telemetry-rate HZ   rows per second of robot time (HZ > 0, default 100)\n";
 }
@@ -127,6 +129,9 @@ SimOptions parse_sim_options(const std::vector<std::string>& args) {
       if (options.record_fps <= 0.0 || options.record_fps > 240.0) {
         throw std::invalid_argument("--record-fps: must be in (0, 240], got " + text);
       }
+    } else if (arg == "--progress-to") {
+      options.progress_path = value();
+      if (options.progress_path.empty()) throw std::invalid_argument("--progress-to: needs a file such as /dev/tty");
     } else if (arg == "--record-size") {
       parse_size(value(), options.record_width, options.record_height);
     } else if (arg == "--telemetry") {

@@ -24,6 +24,9 @@ struct SimOptions {
   double record_fps = 30.0;
   int record_width = 1280;
   int record_height = 720;
+  // --progress-to: where the video's rendering bar is drawn when the run ends (a terminal, while
+  // the sim's own output goes to a log); empty: the standard output
+  std::string progress_path;
   std::string telemetry_path;  // CSV
   double telemetry_rate_hz = 100.0;
 };

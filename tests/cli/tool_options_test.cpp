@@ -40,6 +40,9 @@ TEST(SimToolOptions, DefaultsAndValues) {
   EXPECT_EQ(o.telemetry_path, "t.csv");
   EXPECT_EQ(o.telemetry_rate_hz, 50.0);
 
+  EXPECT_TRUE(defaults.progress_path.empty()) << "the bar goes to the output";
+  EXPECT_EQ(parse_sim_options({"--record", "run.mp4", "--progress-to", "/dev/tty"}).progress_path, "/dev/tty");
+
   const SimOptions v = parse_sim_options({"--viewer", "--viewer-screenshot", "shot.png"});
   EXPECT_TRUE(v.viewer);
   EXPECT_EQ(v.viewer_screenshot_path, "shot.png");
@@ -64,6 +67,7 @@ TEST(SimToolOptions, OptionsThatNeedAnotherOrExcludeOne) {
   EXPECT_NE(sim_error({"--record-fps", "10"}).find("--record-fps needs --record FILE.mp4"), std::string::npos);
   EXPECT_NE(sim_error({"--record-size", "320x240"}).find("--record-size needs --record"), std::string::npos);
   EXPECT_NE(sim_error({"--viewer-screenshot", "a.png"}).find("--viewer-screenshot needs --viewer"), std::string::npos);
+  EXPECT_NE(sim_error({"--progress-to", "/dev/tty"}).find("--progress-to needs --record FILE.mp4"), std::string::npos);
   EXPECT_NE(sim_error({"--telemetry-rate", "10"}).find("--telemetry-rate needs --telemetry"), std::string::npos);
   EXPECT_EQ(sim_error({"--viewer", "--telemetry", "t.csv"}), "");
   EXPECT_EQ(sim_error({"--record", "a.mp4", "--telemetry", "t.csv"}), "");
