@@ -59,7 +59,8 @@ TEST(McConfig, UnknownKeyIsNamedWithTheAcceptedKeys) {
   const std::string error = load_error("robot:\n  modle: x.xml\n");
   EXPECT_NE(error.find("robot.modle is not a known key"), std::string::npos) << error;
   EXPECT_NE(
-      error.find("accepted: cyberdog2_motor_sdk, initial_height_m, initial_pose, kind, model, seed, sensor_noise"),
+      error.find("accepted: command_latency_ticks, cyberdog2_motor_sdk, initial_height_m, initial_pose, kind, model, "
+                 "seed, sensor_noise, state_latency_ticks, terrain, zsibot_shm)"),
       std::string::npos)
       << error;
   EXPECT_NE(error.find("config_under_test.yaml"), std::string::npos) << error;
