@@ -21,7 +21,8 @@ constexpr const char* kShmSection = "zsibot_shm";
 // the simulation's own keys: a real robot has no model to load nor a pose to start in
 const std::set<std::string> kSimulationKeys{"initial_pose", "initial_height_m", "sensor_noise", "seed", "terrain",
                                             "command_latency_ticks", "state_latency_ticks"};
-// a link slower than 50 ms has lost the robot (the link watch's limit, robot.*.link_timeout_s)
+// 50 ms at the default 2 ms tick: far beyond a real link's watch (robot.*.link_timeout_s, 20 ms
+// by default), past which a robot is damped as lost
 constexpr unsigned kLatencyTicksMax = 25;
 
 void read_latency(const SectionReader& section, const char* key, int& ticks) {
@@ -103,10 +104,10 @@ std::string lcm_endpoint(const std::string& url) {
 
 void read_robot_section(const YAML::Node& node, const std::string& path, const std::string& base_dir,
                         McConfig& config) {
-  const SectionReader section(node, path, "robot",
-                              {"kind", "model", "initial_pose", "initial_height_m", "sensor_noise", "seed",
-                               "terrain", "command_latency_ticks", "state_latency_ticks", kMotorSdkSection,
-                               kShmSection});
+  // every kind's keys, then the simulation's (refused below on a real robot, by name)
+  std::set<std::string> accepted{"kind", "model", kMotorSdkSection, kShmSection};
+  accepted.insert(kSimulationKeys.begin(), kSimulationKeys.end());
+  const SectionReader section(node, path, "robot", accepted);
   std::string kind = robot_kind_name(config.robot_kind);
   section.text("kind", kind, std::set<std::string>(std::begin(kRobotKindNames), std::end(kRobotKindNames)));
   for (int k = 0; k < static_cast<int>(std::size(kRobotKindNames)); ++k) {
