@@ -111,3 +111,14 @@ stop_status_recorder() {
 distinct_steps() {
   cut -d' ' -f1-"$2" "$1" | grep '^mode' | uniq > "$3"
 }
+
+# print_steps <steps log>: the steps, each run of lines that differ only in their progress bar as
+# one line with the bar's first and last value ("bar 0..95"), so a failed test's output stays short
+print_steps() {
+  awk '{ bar = $6; key = $0; sub(/ bar [0-9]+ /, " bar * ", key) }
+       key != last { if (NR > 1) flush(); last = key; first = bar; n = 0 }
+       { final = bar; n++ }
+       function flush(   line) { line = last; sub(/ bar \* /, " bar " (first == final ? first : first ".." final) " ", line)
+                                 print line (n > 1 ? "  [" n " lines]" : "") }
+       END { if (NR > 0) flush() }' "$1"
+}

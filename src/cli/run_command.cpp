@@ -86,9 +86,12 @@ int run_run_command(const std::vector<std::string>& args) {
     interfaces.finish(stdout);
     if (sim_refusals) sim_refusals->finish(stdout);
     robot.finish(stdout);
-    std::printf("cerebellum stopped: %.2f s robot time in %.2f s wall time, %llu ticks, %llu late substeps\n",
-                stats.robot_time_s, stats.wall_time_s, static_cast<unsigned long long>(stats.ticks),
-                static_cast<unsigned long long>(stats.late_substeps));
+    std::printf(
+        "cerebellum stopped: %.2f s robot time in %.2f s wall time, %llu ticks, %llu late substeps, "
+        "%llu pace slips (%.3f s given up)\n",
+        stats.robot_time_s, stats.wall_time_s, static_cast<unsigned long long>(stats.ticks),
+        static_cast<unsigned long long>(stats.late_substeps), static_cast<unsigned long long>(stats.pace_slips),
+        stats.slipped_wall_s);
   } catch (const std::exception& e) {
     std::fprintf(stderr, "cerebellum run: %s\n", e.what());
     return 1;

@@ -86,9 +86,10 @@ int run_sim_command(const std::vector<std::string>& args) {
     if (sim_control) sim_control->finish(stderr);
     std::printf(
         "cerebellum stopped: %.2f s robot time in %.2f s wall time (%.1fx real time), %llu ticks, "
-        "%llu late substeps, trunk height %.3f m (simulator truth)\n",
+        "%llu late substeps, %llu pace slips (%.3f s given up), trunk height %.3f m (simulator truth)\n",
         stats.robot_time_s, stats.wall_time_s, stats.wall_time_s > 0 ? stats.robot_time_s / stats.wall_time_s : 0.0,
         static_cast<unsigned long long>(stats.ticks), static_cast<unsigned long long>(stats.late_substeps),
+        static_cast<unsigned long long>(stats.pace_slips), stats.slipped_wall_s,
         mc.simulation().ground_truth().position[2]);
     if (!tools_ok) return 1;
   } catch (const std::exception& e) {

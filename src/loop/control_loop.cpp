@@ -95,7 +95,16 @@ void ControlLoop::pace_until(double robot_time_s) {
   const Clock::time_point deadline =
       pace_wall_start_ + std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(wall_offset_s));
   const double substep_wall_s = period_s_ / substeps_ / pace_speed_;
-  if (Clock::now() > deadline + std::chrono::duration<double>(substep_wall_s)) {
+  const double late_wall_s = std::chrono::duration<double>(Clock::now() - deadline).count();
+  if (late_wall_s > kPaceCatchUpLimitPeriods * period_s_ / pace_speed_) {
+    // the schedule resumes from now: the robot time lost is not run in a burst
+    pace_wall_start_ += std::chrono::duration_cast<Clock::duration>(std::chrono::duration<double>(late_wall_s));
+    ++late_substeps_;
+    ++pace_slips_;
+    slipped_wall_s_ += late_wall_s;
+    return;
+  }
+  if (late_wall_s > substep_wall_s) {
     ++late_substeps_;
     return;
   }
@@ -113,8 +122,11 @@ RunStats ControlLoop::run(const RunOptions& options, const std::atomic<bool>& st
   pace_speed_ = options.speed;
   pace_stop_ = &stop;
   pace_robot_start_s_ = backend_.time_s();
-  pace_wall_start_ = Clock::now();
+  const Clock::time_point run_wall_start = Clock::now();
+  pace_wall_start_ = run_wall_start;  // moves on at each slip
   late_substeps_ = 0;
+  pace_slips_ = 0;
+  slipped_wall_s_ = 0.0;
   last_tick_wall_ = {};
   while (!stop.load(std::memory_order_relaxed)) {
     const double elapsed = backend_.time_s() - pace_robot_start_s_;
@@ -123,8 +135,10 @@ RunStats ControlLoop::run(const RunOptions& options, const std::atomic<bool>& st
     ++stats.ticks;
   }
   stats.late_substeps = late_substeps_;
+  stats.pace_slips = pace_slips_;
+  stats.slipped_wall_s = slipped_wall_s_;
   stats.robot_time_s = backend_.time_s() - pace_robot_start_s_;
-  stats.wall_time_s = std::chrono::duration<double>(Clock::now() - pace_wall_start_).count();
+  stats.wall_time_s = std::chrono::duration<double>(Clock::now() - run_wall_start).count();
   pace_speed_ = 0.0;
   pace_stop_ = nullptr;
   return stats;

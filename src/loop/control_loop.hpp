@@ -26,9 +26,19 @@ struct RunOptions {
 struct RunStats {
   std::uint64_t ticks = 0;
   std::uint64_t late_substeps = 0;  // paced mode: substeps that started a whole substep late
+  // paced mode: times the loop fell more than kPaceCatchUpLimitPeriods behind (the host stopped it)
+  // and resumed from there, and the wall time so given up
+  std::uint64_t pace_slips = 0;
+  double slipped_wall_s = 0.0;
   double robot_time_s = 0.0;
   double wall_time_s = 0.0;
 };
+
+// A paced loop up to this many control periods behind catches up (runs its substeps without
+// sleeping); further behind, the host stopped it (a VM's stolen vCPU, a debugger): it resumes the
+// schedule from now instead. Catching up 50 ms would run a simulated robot 50 ms on one stale
+// command, and send a real robot a burst of ticks computed on one stale state.
+inline constexpr double kPaceCatchUpLimitPeriods = 2.0;
 
 class ControlLoop {
  public:
@@ -66,6 +76,8 @@ class ControlLoop {
   double pace_robot_start_s_ = 0.0;
   std::chrono::steady_clock::time_point pace_wall_start_{};
   std::uint64_t late_substeps_ = 0;
+  std::uint64_t pace_slips_ = 0;
+  double slipped_wall_s_ = 0.0;
   std::chrono::steady_clock::time_point last_tick_wall_{};  // while paced: when the last tick started
 };
 

@@ -127,6 +127,8 @@ RunStats ViewerSession::run(const RunOptions& options, const std::atomic<bool>& 
       const RunStats segment = mc_.loop().run({remaining_s, speed}, interrupt);
       total.ticks += segment.ticks;
       total.late_substeps += segment.late_substeps;
+      total.pace_slips += segment.pace_slips;
+      total.slipped_wall_s += segment.slipped_wall_s;
       total.wall_time_s += segment.wall_time_s;
     }
     total.robot_time_s = backend.time_s() - start_s;

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <future>
+#include <thread>
 
 #include "backend/fake_backend.hpp"
 #include "estimation/kinematic_estimator.hpp"
@@ -165,6 +166,32 @@ TEST(ControlLoop, AStopEndsTheRunAtOnceEvenWhenThePaceWaitsMinutesPerSubstep) {
   std::future<RunStats> run = std::async(std::launch::async, [&] { return l.loop.run({-1.0, 1e-6}, stop); });
   ASSERT_EQ(run.wait_for(std::chrono::seconds(30)), std::future_status::ready) << "the run did not stop";
   EXPECT_EQ(run.get().ticks, 1u);
+}
+
+// stands for a host that stops the loop once: its tick at 20 ms takes 40 ms of wall time
+class StallingController final : public MotionController {
+ public:
+  void compute(const RobotState& state, JointCommand& command) override {
+    command = JointCommand{};
+    if (!stalled && state.time_s >= 0.02) {
+      stalled = true;
+      std::this_thread::sleep_for(std::chrono::milliseconds(40));
+    }
+  }
+  bool stalled = false;
+};
+
+TEST(ControlLoop, APacedLoopTheHostStoppedResumesFromThereInsteadOfRunningTheLostTimeInABurst) {
+  StallingController controller;
+  Loop l(controller);
+  const std::atomic<bool> stop{false};
+  const RunStats stats = l.loop.run({0.1, 1.0}, stop);
+  EXPECT_EQ(stats.ticks, 50u);
+  EXPECT_GE(stats.pace_slips, 1u);
+  EXPECT_GE(stats.slipped_wall_s, 0.035);
+  // caught up, 0.1 s of robot time would end 0.1 s after the start; resumed, the 40 ms stop is
+  // added (a lower bound: a slower host only adds to it)
+  EXPECT_GE(stats.wall_time_s, stats.robot_time_s + 0.035);
 }
 
 // plans every leg in stance with the tick count as its stance phase (none on the first tick)

@@ -29,7 +29,7 @@ echo "example exit status: $result"
 [[ $result -eq 0 ]] || exit 1
 # the distinct response lines, in order
 distinct_steps "$work/status.log" 9 "$work/steps.log"
-cat "$work/steps.log"
+print_steps "$work/steps.log"
 fail=0
 steps_log="$work/steps.log"
 from=1
