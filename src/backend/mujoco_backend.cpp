@@ -39,6 +39,8 @@ MujocoBackend::MujocoBackend(const MujocoBackendConfig& config)
   // a constructor that throws runs no destructor: free the model here (LeakSanitizer found it)
   try {
     find_model_elements();
+    apply_model_error();
+    reset_to_start_pose();
   } catch (...) {
     mj_deleteData(data_);
     mj_deleteModel(model_);
@@ -68,7 +70,10 @@ void MujocoBackend::find_model_elements() {
   imu_quat_address_ = sensor_address(model_, "imu_quat", config.model_path);
   imu_gyro_address_ = sensor_address(model_, "imu_gyro", config.model_path);
   imu_accel_address_ = sensor_address(model_, "imu_accel", config.model_path);
+}
 
+void MujocoBackend::reset_to_start_pose() {
+  const MujocoBackendConfig& config = config_;
   const int key = mj_name2id(model_, mjOBJ_KEY, config.initial_keyframe.c_str());
   if (key < 0) {
     throw std::runtime_error("model " + config.model_path + ": no keyframe '" + config.initial_keyframe +
@@ -99,7 +104,8 @@ SensorFrame MujocoBackend::read() {
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     frame.q[i] = noisy(data_->qpos[qpos_address_[i]], noise.joint_position_rad);
     frame.qd[i] = noisy(data_->qvel[dof_address_[i]], noise.joint_velocity_rad_s);
-    frame.tau[i] = applied_torque_[i];
+    // the driver reports its torque from its current with the data sheet's torque constant
+    frame.tau[i] = applied_torque_[i] / config_.model_error.motor_strength_scale;
     frame.temperature_c[i] = thermal_[i].temperature_c();
   }
   frame.motor_faults = motor_faults_;
@@ -117,13 +123,72 @@ SensorFrame MujocoBackend::read() {
   return frame;
 }
 
-void MujocoBackend::write(const JointCommand& command) { command_ = command; }
+void MujocoBackend::apply_model_error() {
+  const ModelError& error = config_.model_error;
+  if (!error.any()) return;
+  const double mass_kg = model_->body_mass[trunk_body_];
+  if (!(mass_kg + error.added_mass_kg > 0.1 * mass_kg)) {
+    throw std::runtime_error("model error: " + std::to_string(error.added_mass_kg) + " kg on a trunk of " +
+                             std::to_string(mass_kg) + " kg leaves too little of it");
+  }
+  // a payload spread like the trunk: its inertia grows with its mass
+  const double scale = (mass_kg + error.added_mass_kg) / mass_kg;
+  model_->body_mass[trunk_body_] = mass_kg + error.added_mass_kg;
+  for (int k = 0; k < 3; ++k) {
+    model_->body_inertia[3 * trunk_body_ + k] *= scale;
+    model_->body_ipos[3 * trunk_body_ + k] += error.com_offset_m[static_cast<std::size_t>(k)];
+  }
+  if (error.foot_friction > 0.0) {
+    // above every ground geom's priority, so the contact takes the foot's friction (MuJoCo otherwise
+    // takes the larger of the two)
+    int top_priority = 0;
+    for (int g = 0; g < model_->ngeom; ++g) top_priority = std::max(top_priority, model_->geom_priority[g]);
+    for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+      foot_priority_[leg] = top_priority + 1;
+      foot_friction_[leg] = error.foot_friction;
+      reset_foot_friction(leg);
+    }
+  }
+  if (!(error.motor_strength_scale > 0.0)) throw std::runtime_error("model error: motor strength must be > 0");
+  config_.motor_limits.torque_max_nm *= error.motor_strength_scale;
+  if (error.actuation_delay_s < 0.0 || error.actuation_delay_s > kMaxActuationDelayS + 1e-12) {
+    throw std::runtime_error("model error: actuation delay must be in [0, 10] ms");
+  }
+  actuation_delay_s_ = std::round(error.actuation_delay_s / model_->opt.timestep) * model_->opt.timestep;
+  // the masses' derived constants (subtree masses, the solver's inverse weights)
+  mj_setConst(model_, data_);
+}
+
+void MujocoBackend::write(const JointCommand& command) {
+  if (actuation_delay_s_ <= 0.0) {
+    command_ = command;
+    return;
+  }
+  if (pending_count_ == pending_.size()) {
+    // fuller than any delay within kMaxActuationDelayS fills it: the oldest reaches the drivers now
+    command_ = pending_[pending_first_].command;
+    pending_first_ = (pending_first_ + 1) % pending_.size();
+    --pending_count_;
+  }
+  pending_[(pending_first_ + pending_count_) % pending_.size()] = {data_->time + actuation_delay_s_, command};
+  ++pending_count_;
+}
+
+void MujocoBackend::deliver_pending_commands() {
+  while (pending_count_ > 0 && pending_[pending_first_].reaches_drivers_s <= data_->time + 1e-9) {
+    command_ = pending_[pending_first_].command;
+    pending_first_ = (pending_first_ + 1) % pending_.size();
+    --pending_count_;
+  }
+}
 
 void MujocoBackend::apply_motor_drivers() {
   for (std::size_t i = 0; i < kNumJoints; ++i) {
     const double q = data_->qpos[qpos_address_[i]];
     const double qd = data_->qvel[dof_address_[i]];
-    const double requested = motor_law_torque(command_.q_des[i], command_.qd_des[i], command_.kp[i], command_.kd[i],
+    // a motor of another strength than the model's gives that much more or less for the same command
+    const double requested = config_.model_error.motor_strength_scale *
+                             motor_law_torque(command_.q_des[i], command_.qd_des[i], command_.kp[i], command_.kd[i],
                                               command_.tau_ff[i], q, qd);
     // a driver in error has stopped its motor
     const bool driving = std::isfinite(requested) && (motor_faults_[i] & kMotorErrorBits) == 0;
@@ -144,6 +209,7 @@ void MujocoBackend::advance(double period_s) {
   for (long s = 0; s < steps; ++s) {
     // the drivers and the push evaluate their laws on the state of this physics step
     mj_step1(model_, data_);
+    deliver_pending_commands();
     apply_motor_drivers();
     apply_disturbances();
     mj_step2(model_, data_);

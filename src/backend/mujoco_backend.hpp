@@ -11,6 +11,7 @@
 
 #include "backend/battery_model.hpp"
 #include "backend/thermal_mass.hpp"
+#include "backend/model_error.hpp"
 #include "backend/motor_model.hpp"
 #include "backend/push_request.hpp"
 #include "backend/robot_backend.hpp"
@@ -34,6 +35,7 @@ struct MujocoBackendConfig {
   std::string initial_keyframe = "lying";  // a <key> of the model
   double initial_height_m = 0.3;           // trunk height at start
   SensorNoise noise;
+  ModelError model_error;  // the robot's differences from the model (backend/model_error.hpp)
   MotorLimits motor_limits;
   MotorThermalParameters thermal;
   BatteryParameters battery;
@@ -87,6 +89,22 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   mjModel_* model_ = nullptr;
   mjData_* data_ = nullptr;
   JointCommand command_{};
+  // a late actuation (config.model_error.actuation_delay_s): the commands written and not yet
+  // reached the drivers, oldest first, each with the robot time it reaches them
+  struct PendingCommand {
+    double reaches_drivers_s = 0.0;
+    JointCommand command{};
+  };
+  std::array<PendingCommand, 32> pending_{};
+  std::size_t pending_first_ = 0;
+  std::size_t pending_count_ = 0;
+  double actuation_delay_s_ = 0.0;  // whole physics steps
+  // the commands whose time has come reach the drivers (command_)
+  void deliver_pending_commands();
+  // the model error's mass, centre of mass, friction and motor strength (constructor)
+  void apply_model_error();
+  // the configured keyframe at the configured height (constructor, after the model error)
+  void reset_to_start_pose();
   JointArray<int> qpos_address_{};
   JointArray<int> dof_address_{};
   JointArray<int> actuator_id_{};

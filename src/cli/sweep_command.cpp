@@ -86,7 +86,12 @@ int run_one_cell(const SweepOptions& o, const SweepSpec& spec, const std::string
     if (folder->scenario_text() != text)
       throw std::runtime_error(o.file + " has changed since the sweep in " + o.out + " started");
   }
-  const RunResult result = run_scenario(cell_scenario(spec, *o.cell), video_attachments(o.record_path));
+  const Scenario scenario = cell_scenario(spec, *o.cell);
+  if (scenario.model_error) {
+    std::fprintf(stderr, "cerebellum sweep: cell %llu's robot: %s\n", static_cast<unsigned long long>(*o.cell),
+                 describe_model_error(scenario_config(scenario).robot.model_error).c_str());
+  }
+  const RunResult result = run_scenario(scenario, video_attachments(o.record_path));
   const std::string header = result_header(spec), row = result_row(spec, *o.cell, result);
   std::printf("%s\n%s\n", header.c_str(), row.c_str());
   if (folder) folder->write_result(*o.cell, header, row);

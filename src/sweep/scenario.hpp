@@ -10,6 +10,7 @@
 
 #include "backend/fault_injecting_backend.hpp"
 #include "backend/terrain.hpp"
+#include "sweep/model_error_draw.hpp"
 
 namespace cerebellum {
 
@@ -49,6 +50,8 @@ struct Scenario {
   std::string file;         // where it was read, for messages
   std::string config_path;  // the MC's configuration file (absolute or relative to the cwd); empty: defaults
   bool sensor_noise = false;  // the simulated sensors' noise, seeded by the run's seed
+  // the robot's differences from the model, drawn per run from the run's seed; unset: exact
+  std::optional<ModelErrorRanges> model_error;
   // the ground of every run (docs/terrain.md); unset: the configuration's robot.terrain
   std::optional<TerrainSpec> terrain;
   unsigned seed = 1;          // the noise and the soak's draws

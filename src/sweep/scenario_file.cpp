@@ -65,12 +65,45 @@ std::string mode_list() {
   return out;
 }
 
+// [low, high] within [lower, upper], low <= high
+void read_range(const SectionReader& section, const YAML::Node& node, const std::string& section_name,
+                const std::string& key, double lower, double upper, double& low, double& high) {
+  if (!node[key]) return;
+  const std::vector<double> pair = number_list(section, node, section_name, key, lower, upper, false);
+  if (pair.size() != 2) section.fail(section_name + "." + key, "must be a range [low, high], e.g. [0.4, 1.2]");
+  if (pair[1] < pair[0]) section.fail(section_name + "." + key, "has its high end below its low end");
+  low = pair[0];
+  high = pair[1];
+}
+
+ModelErrorRanges read_model_error(const YAML::Node& node, const std::string& name, bool sensor_noise) {
+  const std::string section = "robot.model_error";
+  const SectionReader error(node, name, section,
+                            {"mass_fraction", "com_offset_m", "foot_friction", "motor_strength_fraction",
+                             "actuation_delay_ms", "sensor_noise_scale"},
+                            kKind);
+  ModelErrorRanges ranges;
+  error.number("mass_fraction", ranges.mass_fraction, 0.0, 0.5);
+  error.number("com_offset_m", ranges.com_offset_m, 0.0, 0.05);
+  read_range(error, node, section, "foot_friction", 0.05, 2.0, ranges.friction_min, ranges.friction_max);
+  error.number("motor_strength_fraction", ranges.motor_strength_fraction, 0.0, 0.5);
+  double delay_min_ms = 0.0, delay_max_ms = 0.0;
+  read_range(error, node, section, "actuation_delay_ms", 0.0, 1e3 * kMaxActuationDelayS, delay_min_ms, delay_max_ms);
+  ranges.actuation_delay_min_s = 1e-3 * delay_min_ms;
+  ranges.actuation_delay_max_s = 1e-3 * delay_max_ms;
+  error.number("sensor_noise_scale", ranges.sensor_noise_scale, 0.0, 10.0);
+  if (ranges.sensor_noise_scale != 1.0 && !sensor_noise)
+    error.fail(section + ".sensor_noise_scale", "scales the sensor noise: it needs robot.sensor_noise: true");
+  return ranges;
+}
+
 void read_robot(const YAML::Node& node, const std::string& name, const std::string& base_dir, Scenario& s) {
-  const SectionReader robot(node, name, "robot", {"config", "sensor_noise"}, kKind);
+  const SectionReader robot(node, name, "robot", {"config", "sensor_noise", "model_error"}, kKind);
   robot.path("config", s.config_path);
   if (!s.config_path.empty() && std::filesystem::path(s.config_path).is_relative() && !base_dir.empty())
     s.config_path = (std::filesystem::path(base_dir) / s.config_path).lexically_normal().string();
   robot.flag("sensor_noise", s.sensor_noise);
+  if (robot.has("model_error")) s.model_error = read_model_error(node["model_error"], name, s.sensor_noise);
 }
 
 // the terrain spec of `cerebellum sim --terrain`; a terrain file is found beside the scenario file

@@ -2,6 +2,12 @@
 // into the scenario and its axes.
 #include "sweep/scenario_file.hpp"
 
+#include <algorithm>
+#include <cmath>
+
+#include "core/robot_model.hpp"
+#include "sweep/model_error_draw.hpp"
+
 #include <gtest/gtest.h>
 
 #include <string>
@@ -171,6 +177,86 @@ TEST(ScenarioFile, AFolderIsRefusedAsAFile) {
   } catch (const ConfigError& e) {
     EXPECT_NE(std::string(e.what()).find("is a folder"), std::string::npos);
   }
+}
+
+}  // namespace
+}  // namespace cerebellum
+
+namespace cerebellum {
+namespace {
+
+const std::string kModelErrorHead = "duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nrobot:\n  sensor_noise: true\n"
+                                    "  model_error:\n";
+
+TEST(ScenarioFile, AModelErrorIsReadWithItsRangesInSeconds) {
+  const SweepSpec spec = parse_scenario(kModelErrorHead +
+                                            "    mass_fraction: 0.15\n    com_offset_m: 0.02\n"
+                                            "    foot_friction: [0.4, 1.2]\n    motor_strength_fraction: 0.15\n"
+                                            "    actuation_delay_ms: [0, 4]\n    sensor_noise_scale: 2\n",
+                                        "s.yaml", "");
+  ASSERT_TRUE(spec.base.model_error.has_value());
+  const ModelErrorRanges& r = *spec.base.model_error;
+  EXPECT_DOUBLE_EQ(r.mass_fraction, 0.15);
+  EXPECT_DOUBLE_EQ(r.com_offset_m, 0.02);
+  EXPECT_DOUBLE_EQ(r.friction_min, 0.4);
+  EXPECT_DOUBLE_EQ(r.friction_max, 1.2);
+  EXPECT_DOUBLE_EQ(r.motor_strength_fraction, 0.15);
+  EXPECT_DOUBLE_EQ(r.actuation_delay_min_s, 0.0);
+  EXPECT_DOUBLE_EQ(r.actuation_delay_max_s, 0.004);
+  EXPECT_DOUBLE_EQ(r.sensor_noise_scale, 2.0);
+  EXPECT_FALSE(parse_scenario("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\n", "s.yaml", "").base.model_error)
+      << "unset: the exact model";
+}
+
+TEST(ScenarioFile, AModelErrorOutOfRangeOrTheWrongWayRoundOrWithoutNoiseToScaleIsRefused) {
+  expect_refusal(kModelErrorHead + "    mass_fraction: 0.9\n", "robot.model_error.mass_fraction");
+  expect_refusal(kModelErrorHead + "    foot_friction: [1.2, 0.4]\n",
+                 "robot.model_error.foot_friction has its high end below its low end");
+  expect_refusal(kModelErrorHead + "    foot_friction: [0.4]\n", "robot.model_error.foot_friction must be a range");
+  expect_refusal(kModelErrorHead + "    actuation_delay_ms: [0, 40]\n", "robot.model_error.actuation_delay_ms[1]");
+  expect_refusal(kModelErrorHead + "    payload_kg: 1\n", "robot.model_error.payload_kg is not a known key");
+  expect_refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nrobot:\n  model_error: {sensor_noise_scale: 2}\n",
+                 "sensor_noise_scale scales the sensor noise: it needs robot.sensor_noise: true");
+}
+
+TEST(ModelErrorDraw, EachRunsDrawStaysWithinItsRangesCoversThemAndRepeatsForItsSeed) {
+  ModelErrorRanges ranges;
+  ranges.mass_fraction = 0.15;
+  ranges.com_offset_m = 0.02;
+  ranges.friction_min = 0.4;
+  ranges.friction_max = 1.2;
+  ranges.motor_strength_fraction = 0.15;
+  ranges.actuation_delay_max_s = 0.004;
+  double lowest_mass = 1e9, highest_mass = -1e9, lowest_friction = 1e9, highest_friction = -1e9;
+  double largest_delay = 0.0, weakest = 1e9;
+  for (unsigned seed = 1; seed <= 2000; ++seed) {
+    const ModelError e = draw_model_error(ranges, seed);
+    ASSERT_LE(std::abs(e.added_mass_kg), 0.15 * robot::kTotalMassKg);
+    for (double offset : e.com_offset_m) ASSERT_LE(std::abs(offset), 0.02);
+    ASSERT_GE(e.foot_friction, 0.4);
+    ASSERT_LE(e.foot_friction, 1.2);
+    ASSERT_LE(std::abs(e.motor_strength_scale - 1.0), 0.15);
+    ASSERT_GE(e.actuation_delay_s, 0.0);
+    ASSERT_LE(e.actuation_delay_s, 0.004);
+    lowest_mass = std::min(lowest_mass, e.added_mass_kg);
+    highest_mass = std::max(highest_mass, e.added_mass_kg);
+    lowest_friction = std::min(lowest_friction, e.foot_friction);
+    highest_friction = std::max(highest_friction, e.foot_friction);
+    largest_delay = std::max(largest_delay, e.actuation_delay_s);
+    weakest = std::min(weakest, e.motor_strength_scale);
+  }
+  // 2000 uniform draws come within 1 % of each end of a range (a miss has odds below 1e-8)
+  EXPECT_LT(lowest_mass, -0.99 * 0.15 * robot::kTotalMassKg);
+  EXPECT_GT(highest_mass, 0.99 * 0.15 * robot::kTotalMassKg);
+  EXPECT_LT(lowest_friction, 0.408);
+  EXPECT_GT(highest_friction, 1.192);
+  EXPECT_GT(largest_delay, 0.00396);
+  EXPECT_LT(weakest, 0.8515);
+  const ModelError a = draw_model_error(ranges, 7), b = draw_model_error(ranges, 7), c = draw_model_error(ranges, 8);
+  EXPECT_EQ(a.added_mass_kg, b.added_mass_kg);
+  EXPECT_EQ(a.actuation_delay_s, b.actuation_delay_s);
+  EXPECT_NE(a.added_mass_kg, c.added_mass_kg);
+  EXPECT_FALSE(draw_model_error(ModelErrorRanges{}, 7).any()) << "zero ranges: the exact model";
 }
 
 }  // namespace
