@@ -92,6 +92,8 @@ int run_one_cell(const SweepOptions& o, const SweepSpec& spec, const std::string
                  describe_model_error(scenario_config(scenario).robot.model_error).c_str());
   }
   const RunResult result = run_scenario(scenario, video_attachments(o.record_path));
+  for (const std::string& note : result.fall_notes)
+    std::fprintf(stderr, "cerebellum sweep: cell %llu: %s\n", static_cast<unsigned long long>(*o.cell), note.c_str());
   const std::string header = result_header(spec), row = result_row(spec, *o.cell, result);
   std::printf("%s\n%s\n", header.c_str(), row.c_str());
   if (folder) folder->write_result(*o.cell, header, row);

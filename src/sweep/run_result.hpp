@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 namespace cerebellum {
 
@@ -25,6 +26,8 @@ struct RunResult {
   double end_speed_m_s = 0.0;   // the trunk's horizontal speed at the end
   int end_mode = 0;             // the high-level mode at the end
   double distance_m = 0.0;      // the trunk's horizontal displacement, start to end
+  // a soak's falls, one line each with the commands before it, for the run's log (not a column)
+  std::vector<std::string> fall_notes;
 };
 
 }  // namespace cerebellum

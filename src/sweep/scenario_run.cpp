@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "loop/lockstep_client.hpp"
@@ -90,6 +91,7 @@ void run_soak(const SoakSpec& soak, unsigned seed, double end_s, Mc& mc, RunDriv
   std::mt19937 rng(seed);
   std::uniform_real_distribution<double> hold(soak.hold_min_s, soak.hold_max_s);
   std::uniform_real_distribution<double> fault_length(soak.fault_min_s, soak.fault_max_s), chance(0.0, 1.0);
+  std::string previous = "the stand";
   while (driver.now_s() < end_s) {
     if (chance(rng) < soak.fault_chance) {
       const std::string fault = random_fault(rng);
@@ -105,7 +107,18 @@ void run_soak(const SoakSpec& soak, unsigned seed, double end_s, Mc& mc, RunDriv
     driver.command(high_level_command(ModeId::Locomotion, walk.gait, walk.velocity.x(), walk.velocity.y(),
                                       walk.velocity.z()));
     const int falls_before = result.falls;
+    const double sent_s = driver.now_s();
+    char described[96];
+    std::snprintf(described, sizeof described, "gait %d (%.2f m/s, %.2f m/s, %.2f rad/s)", walk.gait,
+                  walk.velocity.x(), walk.velocity.y(), walk.velocity.z());
     driver.run_until(driver.now_s() + hold(rng));
+    if (result.falls > falls_before) {
+      char note[320];
+      std::snprintf(note, sizeof note, "fall at %.2f s, %.2f s into %s, which followed %s",
+                    watch.fall_s(falls_before), watch.fall_s(falls_before) - sent_s, described, previous.c_str());
+      result.fall_notes.emplace_back(note);
+    }
+    previous = described;
     const HighLevelStatus& status = mc.machine().status();
     const bool walking = status.mode == static_cast<int>(ModeId::Locomotion) && status.gait_id == walk.gait;
     if (result.falls == falls_before && walking) continue;
@@ -126,6 +139,7 @@ void run_soak(const SoakSpec& soak, unsigned seed, double end_s, Mc& mc, RunDriv
     driver.run_until(driver.now_s() + 0.6);
     driver.command(high_level_command(ModeId::RecoveryStand, 0));
     driver.run_until(driver.now_s() + 8.0);
+    previous = "the stand";
   }
 }
 
