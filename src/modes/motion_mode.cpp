@@ -69,7 +69,7 @@ HighLevelCommand MotionMode::plan_step(std::size_t i) const {
   if (i <= motion_->steps.size()) return motion_->steps[i - 1];
   // the stand pose: level, at the stand height, four feet down
   HighLevelCommand stand;
-  stand.mode = static_cast<int>(ModeId::PoseControl);
+  stand.mode = static_cast<int>(kEndMode);
   stand.gait_id = kPoseAbsoluteHeightGait;
   stand.pos_des[2] = static_cast<float>(return_height_m_);
   stand.duration = config_.final_stand_ms;

@@ -28,6 +28,9 @@ struct MotionModeConfig {
 
 class MotionMode final : public Mode {
  public:
+  // the mode of the motion's last step, the level stand: a finished motion leaves the robot in it
+  static constexpr ModeId kEndMode = ModeId::PoseControl;
+
   // the modes a step may run, by mode id; the library must outlive this mode
   using StepModes = std::array<Mode*, 4>;
   // user_gait_runner: where a motion's own user gait is handed to its 11/110 steps

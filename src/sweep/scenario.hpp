@@ -68,10 +68,12 @@ struct Scenario {
 };
 
 // what a sweep may vary, each a key of the file's `sweep:` mapping
-enum class AxisKind { Seed, Gait, PushImpulse, PushDirection, PushAt, Terrain };
+// JumpOrMotionId: the gait_id of every jump (16) and named motion (62) command of the script
+enum class AxisKind { Seed, Gait, PushImpulse, PushDirection, PushAt, Terrain, JumpOrMotionId };
 struct Axis {
   AxisKind kind = AxisKind::Seed;
-  std::string name;  // as the file writes it: seed, gait, push_impulse_n_s, push_direction_deg, push_at_s, terrain
+  std::string name;  // as the file writes it: seed, gait, push_impulse_n_s, push_direction_deg, push_at_s, terrain,
+                     // jump_or_motion_id
   std::vector<double> values;  // terrain: the indices of terrains, so the grid counts every axis alike
   std::vector<TerrainSpec> terrains;  // terrain: the grounds, in the file's order
 };
@@ -82,6 +84,6 @@ struct SweepSpec {
 };
 
 // the axes' names as the file writes them, for messages and the results' columns
-const std::array<const char*, 6>& axis_names();
+const std::array<const char*, 7>& axis_names();
 
 }  // namespace cerebellum

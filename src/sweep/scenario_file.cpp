@@ -11,6 +11,7 @@
 #include "core/text_file.hpp"
 #include "loop/timed_fault_entry.hpp"
 #include "loop/yaml_section.hpp"
+#include "modes/jump_mode.hpp"
 
 namespace cerebellum {
 
@@ -57,6 +58,20 @@ void check_list(const SectionReader& top, const YAML::Node& list, const std::str
 
 bool known_mode(int mode) {
   return std::any_of(kAllModes.begin(), kAllModes.end(), [&](const ModeInfo& m) { return static_cast<int>(m.id) == mode; });
+}
+
+bool is_jump(const ScriptedCommand& c) { return c.mode == static_cast<int>(ModeId::Jump3d); }
+bool is_motion(const ScriptedCommand& c) { return c.mode == static_cast<int>(ModeId::Motion); }
+
+// a jump of the table or a flip (the front flip is refused by the MC with its reason: a run may
+// test that)
+bool known_jump_id(int id) { return find_jump(id) != nullptr || id == kBackFlipGaitId || id == kFrontFlipGaitId; }
+
+std::string jump_ids() {
+  std::string out;
+  for (int id = 0; id < 256; ++id)
+    if (known_jump_id(id)) out += (out.empty() ? "" : ", ") + std::to_string(id);
+  return out;
 }
 
 std::string mode_list() {
@@ -142,6 +157,8 @@ std::vector<ScriptedCommand> read_commands(const SectionReader& top, const YAML:
     c.gait = static_cast<int>(gait);
     if (c.mode == static_cast<int>(ModeId::Locomotion) && find_gait(c.gait) == nullptr)
       entry.fail(where + ".gait", "is not a gait of the gait table (control/locomotion/gait_table.hpp)");
+    if (is_jump(c) && !known_jump_id(c.gait))
+      entry.fail(where + ".gait", "is not a jump id of mode 16 (" + jump_ids() + ")");
     entry.number("vx_m_s", c.vx_m_s, -kMaxSpeedMs, kMaxSpeedMs);
     entry.number("vy_m_s", c.vy_m_s, -kMaxSpeedMs, kMaxSpeedMs);
     entry.number("yaw_rate_rad_s", c.yaw_rate_rad_s, -kMaxSpeedMs, kMaxSpeedMs);
@@ -257,6 +274,18 @@ std::vector<Axis> read_axes(const YAML::Node& node, const std::string& name, con
       case AxisKind::PushDirection: axis.values = number_list(sweep, node, "sweep", axis.name, -360, 360, false); break;
       case AxisKind::PushAt: axis.values = number_list(sweep, node, "sweep", axis.name, 0, kScenarioMaxDurationS, false); break;
       case AxisKind::Terrain: read_terrain_axis(sweep, node, base_dir, axis); break;
+      case AxisKind::JumpOrMotionId: {
+        axis.values = number_list(sweep, node, "sweep", axis.name, 0, 255, true);
+        const bool jumps = std::any_of(s.commands.begin(), s.commands.end(), is_jump);
+        const bool motions = std::any_of(s.commands.begin(), s.commands.end(), is_motion);
+        if (!jumps && !motions)
+          sweep.fail("sweep." + axis.name, "sets the gait_id of the script's jumps (mode 16) and named motions "
+                                           "(mode 62), but the script has none");
+        for (std::size_t i = 0; i < axis.values.size(); ++i)
+          if (jumps && !known_jump_id(static_cast<int>(axis.values[i])))
+            sweep.fail(indexed("sweep." + axis.name, i), "is not a jump id of mode 16 (" + jump_ids() + ")");
+        break;
+      }
     }
     const bool push_axis = axis.kind == AxisKind::PushImpulse || axis.kind == AxisKind::PushDirection ||
                            axis.kind == AxisKind::PushAt;
@@ -270,9 +299,9 @@ std::vector<Axis> read_axes(const YAML::Node& node, const std::string& name, con
 
 }  // namespace
 
-const std::array<const char*, 6>& axis_names() {
-  static constexpr std::array<const char*, 6> kNames{"seed",           "gait",      "push_impulse_n_s",
-                                                     "push_direction_deg", "push_at_s", "terrain"};
+const std::array<const char*, 7>& axis_names() {
+  static constexpr std::array<const char*, 7> kNames{"seed",      "gait",    "push_impulse_n_s", "push_direction_deg",
+                                                     "push_at_s", "terrain", "jump_or_motion_id"};
   return kNames;
 }
 

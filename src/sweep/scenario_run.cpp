@@ -7,6 +7,7 @@
 
 #include "loop/lockstep_client.hpp"
 #include "loop/simulated_robot.hpp"
+#include "modes/motion_mode.hpp"
 #include "sweep/random_soak.hpp"
 #include "sweep/run_watch.hpp"
 
@@ -143,13 +144,20 @@ void run_soak(const SoakSpec& soak, unsigned seed, double end_s, Mc& mc, RunDriv
   }
 }
 
+// in the script's last mode, or, after a named motion (62), in the stand a finished motion leaves
+bool ended_in_last_commanded_mode(const Scenario& s, const RunResult& r) {
+  const int last = s.commands.back().mode;
+  return r.end_mode == last ||
+         (last == static_cast<int>(ModeId::Motion) && r.end_mode == static_cast<int>(MotionMode::kEndMode));
+}
+
 void judge_run(const Scenario& s, RunResult& r) {
   const bool scripted_only = !s.soak.has_value();
   if (r.non_finite_commands > 0 || r.falls_not_safe > 0 || (!scripted_only && r.falls_no_fault_near > 0)) {
     r.outcome = "unsafe";
   } else if (scripted_only && r.falls > 0) {
     r.outcome = "fell";
-  } else if (scripted_only && r.end_mode != s.commands.back().mode) {
+  } else if (scripted_only && !ended_in_last_commanded_mode(s, r)) {
     r.outcome = "stopped";  // a protective stop took the robot out of the commanded mode
   } else if (s.settle_speed_m_s > 0 && r.end_speed_m_s > s.settle_speed_m_s) {
     r.outcome = "moving";

@@ -52,6 +52,11 @@ Scenario cell_scenario(const SweepSpec& spec, std::uint64_t index) {
         for (ScenarioPush& p : s.pushes) p.at_s = v;
         break;
       case AxisKind::Terrain: s.terrain = spec.axes[i].terrains.at(static_cast<std::size_t>(v)); break;
+      case AxisKind::JumpOrMotionId:
+        for (ScriptedCommand& c : s.commands)
+          if (c.mode == static_cast<int>(ModeId::Jump3d) || c.mode == static_cast<int>(ModeId::Motion))
+            c.gait = static_cast<int>(v);
+        break;
     }
   }
   return s;

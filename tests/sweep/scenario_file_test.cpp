@@ -84,7 +84,7 @@ TEST(ScenarioFile, AnAxisWithNoValuesIsRefused) {
 
 TEST(ScenarioFile, AnUnknownAxisIsRefusedWithTheAxesThatExist) {
   expect_refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nsweep:\n  friction: [1]\n",
-                 "sweep.friction is not a known key (accepted: gait, push_at_s, push_direction_deg, "
+                 "sweep.friction is not a known key (accepted: gait, jump_or_motion_id, push_at_s, push_direction_deg, "
                    "push_impulse_n_s, seed, terrain)");
 }
 
@@ -217,6 +217,16 @@ TEST(ScenarioFile, AModelErrorOutOfRangeOrTheWrongWayRoundOrWithoutNoiseToScaleI
   expect_refusal(kModelErrorHead + "    payload_kg: 1\n", "robot.model_error.payload_kg is not a known key");
   expect_refusal("duration_s: 3\ncommands: [{at_s: 0, mode: 12}]\nrobot:\n  model_error: {sensor_noise_scale: 2}\n",
                  "sensor_noise_scale scales the sensor noise: it needs robot.sensor_noise: true");
+}
+
+TEST(ScenarioFile, AJumpThatIsNotInTheJumpTableIsRefusedInTheScriptAndOnTheAxis) {
+  expect_refusal("duration_s: 8\ncommands: [{at_s: 0, mode: 12}, {at_s: 3, mode: 16, gait: 8}]\n",
+                 "commands[1].gait is not a jump id of mode 16 (0, 1, 2, 3, 4, 5, 6, 9, 20, 21)");
+  expect_refusal("duration_s: 8\ncommands: [{at_s: 0, mode: 12}, {at_s: 3, mode: 16, gait: 4}]\n"
+                 "sweep: {jump_or_motion_id: [4, 7]}\n",
+                 "sweep.jump_or_motion_id[1] is not a jump id of mode 16");
+  expect_refusal("duration_s: 8\ncommands: [{at_s: 0, mode: 12}]\nsweep: {jump_or_motion_id: [4]}\n",
+                 "but the script has none");
 }
 
 TEST(ModelErrorDraw, EachRunsDrawStaysWithinItsRangesCoversThemAndRepeatsForItsSeed) {

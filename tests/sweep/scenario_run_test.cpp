@@ -54,6 +54,21 @@ TEST(ScenarioRun, StandingUnpushedEndsOkAndAHardShoveIsJudgedAFall) {
   EXPECT_EQ(shoved.falls_not_safe, 0);
 }
 
+TEST(ScenarioRun, ANamedMotionThatFinishesInItsLevelStandIsOkAndAJumpLandsWhereItAimed) {
+  const SweepSpec spec = parse_scenario("duration_s: 8\ncommands: [{at_s: 0, mode: 12}, {at_s: 3, mode: 62, gait: 3}]\n"
+                                        "settle_speed_m_s: 0.3\nsweep: {jump_or_motion_id: [3]}\n",
+                                        "s.yaml", "");
+  const RunResult sat = run_scenario(cell_scenario(spec, 0));
+  EXPECT_EQ(sat.end_mode, static_cast<int>(ModeId::PoseControl)) << "the motion's last step";
+  EXPECT_EQ(sat.outcome, "ok");
+  const SweepSpec jump = parse_scenario("duration_s: 8\ncommands: [{at_s: 0, mode: 12}, {at_s: 3, mode: 16, gait: 4}]\n"
+                                        "settle_speed_m_s: 0.3\n",
+                                        "s.yaml", "");
+  const RunResult jumped = run_scenario(cell_scenario(jump, 0));
+  EXPECT_EQ(jumped.outcome, "ok");
+  EXPECT_NEAR(jumped.distance_m, 0.30, 0.05) << "16/4: 30 cm forward";
+}
+
 TEST(ScenarioRun, TheSoakSendsRandomCommandsAndFaultsAndJudgesSafety) {
   const SweepSpec spec = parse_scenario("robot: {sensor_noise: true}\nseed: 3\nduration_s: 15\n"
                                             "commands: [{at_s: 0, mode: 12}]\nsoak: {start_s: 3, fault_chance: 1}\n",

@@ -65,6 +65,19 @@ TEST(SweepGrid, ATerrainAxisGivesEachCellItsGroundAndTheResultsNameItsSpec) {
   EXPECT_EQ(result_row(spec, 3, RunResult{}).rfind("3,slope:10,2,", 0), 0u) << result_row(spec, 3, RunResult{});
 }
 
+TEST(SweepGrid, AJumpOrMotionIdAxisSetsTheGaitIdOfEveryJumpAndMotionButNotOfTheWalks) {
+  const SweepSpec spec = parse_scenario("duration_s: 20\ncommands:\n  - {at_s: 0, mode: 12}\n"
+                                        "  - {at_s: 3, mode: 16, gait: 4}\n  - {at_s: 6, mode: 11, gait: 3}\n"
+                                        "  - {at_s: 9, mode: 62, gait: 2}\nsweep:\n  jump_or_motion_id: [1, 6]\n",
+                                        "s.yaml", "");
+  const Scenario s = cell_scenario(spec, 1);
+  EXPECT_EQ(s.commands[0].gait, 0);
+  EXPECT_EQ(s.commands[1].gait, 6);
+  EXPECT_EQ(s.commands[2].gait, 3);
+  EXPECT_EQ(s.commands[3].gait, 6);
+  EXPECT_EQ(result_header(spec).rfind("cell,jump_or_motion_id,seed,", 0), 0u) << result_header(spec);
+}
+
 TEST(SweepGrid, ACellOutsideTheGridIsRefused) {
   const SweepSpec spec = spec_of("  seed: [1, 2]\n");
   EXPECT_THROW(cell_values(spec, 2), std::out_of_range);
