@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
+#include "modes/jump_mode.hpp"
 #include "safety/command_finite.hpp"
 #include "sweep/random_soak.hpp"
 
@@ -28,7 +29,12 @@ void RunWatch::observe(const CycleRecord& record, const GroundTruth& truth, doub
   was_protecting_ = record.health.protecting();
   const double tilt = tilt_rad(truth);
   result_.max_tilt_deg = std::max(result_.max_tilt_deg, tilt * kRadToDeg);
-  const bool up = tilt < kFallTiltRad;
+  // a flip's own turn is not a fall; one that ends tipped over is, when it ends
+  const HighLevelStatus& status = record.high_level.status;
+  const bool flipping = status.mode == static_cast<int>(ModeId::Jump3d) &&
+                        (status.gait_id == kBackFlipGaitId || status.gait_id == kFrontFlipGaitId) &&
+                        status.order_process_bar < 100;
+  const bool up = tilt < kFallTiltRad || flipping;
   if (up_ && !up) {
     ++result_.falls;
     fall_times_s_.push_back(now_s);

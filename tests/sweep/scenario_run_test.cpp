@@ -69,6 +69,17 @@ TEST(ScenarioRun, ANamedMotionThatFinishesInItsLevelStandIsOkAndAJumpLandsWhereI
   EXPECT_NEAR(jumped.distance_m, 0.30, 0.05) << "16/4: 30 cm forward";
 }
 
+TEST(ScenarioRun, ABackFlipsOwnTurnIsNotAFallAndItEndsStandingBehindItsTakeOff) {
+  const SweepSpec spec = parse_scenario("duration_s: 9\ncommands: [{at_s: 0, mode: 12}, {at_s: 3, mode: 16, gait: 20}]\n"
+                                        "settle_speed_m_s: 0.3\n",
+                                        "s.yaml", "");
+  const RunResult flip = run_scenario(cell_scenario(spec, 0));
+  EXPECT_GT(flip.max_tilt_deg, 170.0) << "it turned over";
+  EXPECT_EQ(flip.falls, 0);
+  EXPECT_EQ(flip.outcome, "ok");
+  EXPECT_NEAR(flip.distance_m, 0.37, 0.1) << "docs/jumps.md: it stands 0.37 m behind its take-off";
+}
+
 TEST(ScenarioRun, TheSoakSendsRandomCommandsAndFaultsAndJudgesSafety) {
   const SweepSpec spec = parse_scenario("robot: {sensor_noise: true}\nseed: 3\nduration_s: 15\n"
                                             "commands: [{at_s: 0, mode: 12}]\nsoak: {start_s: 3, fault_chance: 1}\n",
