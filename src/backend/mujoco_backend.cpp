@@ -164,21 +164,21 @@ void MujocoBackend::write(const JointCommand& command) {
     command_ = command;
     return;
   }
-  if (pending_count_ == pending_.size()) {
-    // fuller than any delay within kMaxActuationDelayS fills it: the oldest reaches the drivers now
-    command_ = pending_[pending_first_].command;
-    pending_first_ = (pending_first_ + 1) % pending_.size();
-    --pending_count_;
-  }
+  // fuller than any delay within kMaxActuationDelayS fills it: the oldest reaches the drivers now
+  if (pending_count_ == pending_.size()) deliver_oldest_pending_command();
   pending_[(pending_first_ + pending_count_) % pending_.size()] = {data_->time + actuation_delay_s_, command};
   ++pending_count_;
 }
 
+void MujocoBackend::deliver_oldest_pending_command() {
+  command_ = pending_[pending_first_].command;
+  pending_first_ = (pending_first_ + 1) % pending_.size();
+  --pending_count_;
+}
+
 void MujocoBackend::deliver_pending_commands() {
   while (pending_count_ > 0 && pending_[pending_first_].reaches_drivers_s <= data_->time + 1e-9) {
-    command_ = pending_[pending_first_].command;
-    pending_first_ = (pending_first_ + 1) % pending_.size();
-    --pending_count_;
+    deliver_oldest_pending_command();
   }
 }
 

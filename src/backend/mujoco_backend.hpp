@@ -27,6 +27,13 @@ struct SensorNoise {
   double joint_velocity_rad_s = 5e-3;
   double gyro_rad_s = 2e-3;
   double accel_m_s2 = 2e-2;
+  // every deviation times factor (a noisier robot than the default one)
+  void scale(double factor) {
+    joint_position_rad *= factor;
+    joint_velocity_rad_s *= factor;
+    gyro_rad_s *= factor;
+    accel_m_s2 *= factor;
+  }
 };
 
 struct MujocoBackendConfig {
@@ -101,6 +108,7 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   double actuation_delay_s_ = 0.0;  // whole physics steps
   // the commands whose time has come reach the drivers (command_)
   void deliver_pending_commands();
+  void deliver_oldest_pending_command();
   // the model error's mass, centre of mass, friction and motor strength (constructor)
   void apply_model_error();
   // the configured keyframe at the configured height (constructor, after the model error)

@@ -89,7 +89,7 @@ int run_one_cell(const SweepOptions& o, const SweepSpec& spec, const std::string
   const Scenario scenario = cell_scenario(spec, *o.cell);
   if (scenario.model_error) {
     std::fprintf(stderr, "cerebellum sweep: cell %llu's robot: %s\n", static_cast<unsigned long long>(*o.cell),
-                 describe_model_error(scenario_config(scenario).robot.model_error).c_str());
+                 describe_model_error(draw_model_error(*scenario.model_error, scenario.seed)).c_str());
   }
   const RunResult result = run_scenario(scenario, video_attachments(o.record_path));
   for (const std::string& note : result.fall_notes)

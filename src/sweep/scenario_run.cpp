@@ -177,12 +177,7 @@ McConfig scenario_config(const Scenario& s) {
   }
   if (s.model_error) {
     config.robot.model_error = draw_model_error(*s.model_error, s.seed);
-    SensorNoise& noise = config.robot.noise;
-    const double scale = s.model_error->sensor_noise_scale;
-    noise.joint_position_rad *= scale;
-    noise.joint_velocity_rad_s *= scale;
-    noise.gyro_rad_s *= scale;
-    noise.accel_m_s2 *= scale;
+    config.robot.noise.scale(s.model_error->sensor_noise_scale);
   }
   return config;
 }

@@ -26,19 +26,12 @@ struct TrotResult {
 TrotResult stand_and_trot(const ModelError& error) {
   McConfig config = lying_start(true, 43);
   config.robot.model_error = error;
-  config.robot.noise.joint_position_rad *= 2.0;  // the soak's sensor noise x2
-  config.robot.noise.joint_velocity_rad_s *= 2.0;
-  config.robot.noise.gyro_rad_s *= 2.0;
-  config.robot.noise.accel_m_s2 *= 2.0;
+  config.robot.noise.scale(2.0);  // the soak's sensor noise x2
   Mc mc = make_simulated_mc(config);
   LockstepClient client(mc);
   TrotResult result;
   const auto watch = [&](const CycleRecord&) {
-    const GroundTruth truth = mc.simulation().ground_truth();
-    const double x = truth.quat[1], y = truth.quat[2];
-    // the angle between the trunk's z axis and the world's (the rotation matrix's zz element)
-    const double up_z = 1.0 - 2.0 * (x * x + y * y);
-    result.largest_tilt_rad = std::max(result.largest_tilt_rad, std::acos(std::clamp(up_z, -1.0, 1.0)));
+    result.largest_tilt_rad = std::max(result.largest_tilt_rad, testing::truth_tilt_rad(mc.simulation().ground_truth()));
   };
   client.run(command(ModeId::RecoveryStand, 0), 3.0);
   client.run(command(ModeId::Locomotion, 3, 1.0), 3.0, watch);

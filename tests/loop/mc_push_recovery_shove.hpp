@@ -8,14 +8,12 @@
 
 #include "loop/lockstep_client.hpp"
 #include "loop/simulated_robot.hpp"
+#include "mc_fixture.hpp"
 
 namespace cerebellum {
 namespace push_recovery_testing {
 
-inline double tilt_rad(const GroundTruth& truth) {
-  const auto& q = truth.quat;
-  return std::acos(std::clamp(1.0 - 2.0 * (q[1] * q[1] + q[2] * q[2]), -1.0, 1.0));
-}
+using testing::truth_tilt_rad;
 
 struct ShoveOutcome {
   double largest_tilt_rad = 0.0;
@@ -47,7 +45,7 @@ inline ShoveOutcome shove(int gait_id, double impulse_n_s, double push_s, double
   const double push_end_s = mc.simulation().time_s() + push_s;
   client.run(stand, push_s + settle_s, [&](const CycleRecord& record) {
     const GroundTruth truth = mc.simulation().ground_truth();
-    outcome.largest_tilt_rad = std::max(outcome.largest_tilt_rad, tilt_rad(truth));
+    outcome.largest_tilt_rad = std::max(outcome.largest_tilt_rad, truth_tilt_rad(truth));
     for (bool contact : truth.foot_contact) outcome.a_foot_lifted |= !contact;
     if (mc.simulation().time_s() <= push_end_s) {
       const double error = std::hypot(record.state.velocity_world.x() - truth.velocity_world[0],
