@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
 #include <random>
 
 #include "backend/mujoco_backend.hpp"
@@ -64,6 +65,16 @@ FlipPlaybackOutcome play_flip_on_simulation(const FlipTrajectory& trajectory, co
                           std::none_of(truth.foot_contact.begin(), truth.foot_contact.end(), [](bool c) { return c; });
     airborne_s = airborne ? airborne_s + kTickS : 0.0;
     outcome.flight_s = std::max(outcome.flight_s, airborne_s);
+    const long tick = std::lround(t / kTickS);
+    if (setup.trace_every_s > 0.0 && tick % std::max(1L, std::lround(setup.trace_every_s / kTickS)) == 0) {
+      const FlipSample planned = flip_sample_at(trajectory, t);
+      const std::array<double, 4>& q = truth.quat;
+      const double roll = std::atan2(2.0 * (q[0] * q[1] + q[2] * q[3]), 1.0 - 2.0 * (q[1] * q[1] + q[2] * q[2]));
+      std::printf("t %.3f phase %d | x %.3f (plan %.3f) z %.3f (plan %.3f) pitch turned %.2f (plan %.2f) roll %.2f | feet %d%d%d%d\n", t,
+                  planned.phase, truth.position[0] - before.position[0], planned.trunk[0] - start.trunk[0], truth.position[2],
+                  planned.trunk[1], outcome.pitch_turned_rad, planned.trunk[2] - start.trunk[2], roll, truth.foot_contact[0] ? 1 : 0,
+                  truth.foot_contact[1] ? 1 : 0, truth.foot_contact[2] ? 1 : 0, truth.foot_contact[3] ? 1 : 0);
+    }
   }
   const GroundTruth after = robot.ground_truth();
   const JointArray<double> temperature_after_c = robot.read().temperature_c;

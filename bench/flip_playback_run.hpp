@@ -19,6 +19,9 @@ struct FlipPlaybackSetup {
   FlipPlayGains gains;
   double settle_s = 0.5;
   double hold_s = 1.5;  // after the plan: the landing pose held this long before judging
+  // > 0: a line to stdout every this many seconds of the playback (time, trunk x, z, pitch
+  // turned, roll, the feet on the ground), to see where the body leaves the plan
+  double trace_every_s = 0.0;
 };
 
 struct FlipPlaybackOutcome {

@@ -33,9 +33,10 @@ std::string find_default_motions() {
   return CEREBELLUM_INSTALL_MOTION_DIR;
 }
 
-std::string find_default_back_flip() {
+// a flip's plan in config/flips beside the model's folder, or "" when there is none
+std::string find_default_flip(const char* file_name) {
   for (const char* dir : {CEREBELLUM_SOURCE_MODEL_DIR, CEREBELLUM_INSTALL_MODEL_DIR}) {
-    const fs::path candidate = fs::path(dir) / ".." / "config" / "flips" / "back_flip.csv";
+    const fs::path candidate = fs::path(dir) / ".." / "config" / "flips" / file_name;
     if (fs::is_regular_file(candidate)) return candidate.lexically_normal().string();
   }
   return "";
@@ -146,7 +147,8 @@ McConfig default_config() {
   McConfig config;
   config.robot.model_path = find_default_model();
   config.motions.folder = find_default_motions();
-  config.back_flip_path = find_default_back_flip();
+  config.back_flip_path = find_default_flip("back_flip.csv");
+  config.front_flip_path = find_default_flip("front_flip.csv");
   return config;
 }
 

@@ -56,9 +56,11 @@ struct McConfig {
   AlienGoUdpConfig aliengo;              // the transport (section aliengo:)
   AlienGoSessionConfig aliengo_session;  // the sport session's timers (section aliengo: too)
   MotionFolders motions;                 // mode 62's motion files
-  // the back flip's plan (docs/jumps.md), beside the model's folder: models/../config/flips in the
-  // source tree and share/cerebellum/config/flips installed; empty: 16/20 is refused
+  // the flips' plans (docs/jumps.md), beside the model's folder: models/../config/flips in the
+  // source tree and share/cerebellum/config/flips installed; empty: that flip (16/20 back, 16/21
+  // front) is refused
   std::string back_flip_path;
+  std::string front_flip_path;
   SimTruthConfig sim_truth;              // simulation only
   SimControlConfig sim_command;          // simulation only
 };

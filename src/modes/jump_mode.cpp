@@ -28,8 +28,15 @@ JumpPlan force_jump_plan(const HighLevelCommand& command, const JumpLimits& limi
   return plan_force_jump(acceleration, command.acc_des[5], limits);
 }
 
-JumpMode::JumpMode(ModeId mode, const JumpControllerConfig& config, std::optional<FlipTrajectory> back_flip)
-    : mode_(mode), controller_(config), back_flip_(std::move(back_flip)) {}
+JumpMode::JumpMode(ModeId mode, const JumpControllerConfig& config, FlipPlans flips)
+    : mode_(mode), controller_(config), flips_(std::move(flips)) {}
+
+const FlipTrajectory* JumpMode::flip_plan(int gait_id) const {
+  if (mode_ != ModeId::Jump3d) return nullptr;
+  if (gait_id == kBackFlipGaitId && flips_.back) return &*flips_.back;
+  if (gait_id == kFrontFlipGaitId && flips_.front) return &*flips_.front;
+  return nullptr;
+}
 
 const char* JumpMode::check(const HighLevelCommand& command) const {
   const bool flip = command.gait_id == kBackFlipGaitId || command.gait_id == kFrontFlipGaitId;
@@ -51,8 +58,9 @@ StartRefusal JumpMode::start_refusal(const RobotState& state, const HighLevelCom
                 front ? "front flip refused: battery below 50 %" : "back flip refused: battery below 20 %"};
       case FlipGate::Allowed: break;
     }
-    if (front) return {SwitchStatus::BanTransition, "front flips are not available yet in this MC (docs/jumps.md)"};
-    if (!back_flip_) return {SwitchStatus::BanTransition, "back flip refused: no flip file was loaded"};
+    if (flip_plan(command.gait_id) == nullptr)
+      return {SwitchStatus::BanTransition,
+              front ? "front flip refused: no flip file was loaded" : "back flip refused: no flip file was loaded"};
   }
   if (const char* reason = jump_refusal(state)) return {SwitchStatus::BanTransition, reason};
   return {};
@@ -61,9 +69,9 @@ StartRefusal JumpMode::start_refusal(const RobotState& state, const HighLevelCom
 void JumpMode::enter(const RobotState& state, const HighLevelCommand& command) {
   gait_ = command.gait_id;
   flip_ = FlipRun{};
-  if (mode_ == ModeId::Jump3d && command.gait_id == kBackFlipGaitId && back_flip_) {
+  if (const FlipTrajectory* plan = flip_plan(command.gait_id)) {
     // the jump gate and the flip gate were passed at the start: the plan plays from this stand
-    flip_.start(state, *back_flip_);
+    flip_.start(state, *plan);
     return;
   }
   if (mode_ == ModeId::Jump3d) {

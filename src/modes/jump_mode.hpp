@@ -43,11 +43,17 @@ inline constexpr std::array<JumpSpec, 8> kJump3dTable{{
 }};
 
 // flips, this MC's documented extension of the mode-16 ids (the reference's table has no id for
-// them): refused with OVER_HEAT / LOW_BAT as the reference says; the back flip plays its planned
-// file (config/flips/back_flip.csv) from a still stand and lands as a jump lands; the front flip,
-// and the back flip without a file, are refused with BAN_TRANS (docs/jumps.md)
+// them): refused with OVER_HEAT / LOW_BAT as the reference says; each plays its planned file
+// (config/flips/back_flip.csv, front_flip.csv) from a still stand and lands as a jump lands; a
+// flip without a file is refused with BAN_TRANS (docs/jumps.md)
 inline constexpr int kBackFlipGaitId = 20;
 inline constexpr int kFrontFlipGaitId = 21;
+
+// the flips' plans the MC read at start (none: that flip is refused)
+struct FlipPlans {
+  std::optional<FlipTrajectory> back;
+  std::optional<FlipTrajectory> front;
+};
 
 // the entry of a jump id, or nullptr
 const JumpSpec* find_jump(int gait_id);
@@ -60,8 +66,8 @@ JumpPlan force_jump_plan(const HighLevelCommand& command, const JumpLimits& limi
 
 class JumpMode final : public Mode {
  public:
-  // mode: ModeId::Jump3d or ModeId::ForceJump; back_flip: the back flip's plan, if any
-  JumpMode(ModeId mode, const JumpControllerConfig& config, std::optional<FlipTrajectory> back_flip = std::nullopt);
+  // mode: ModeId::Jump3d or ModeId::ForceJump; flips: the flips' plans, if any
+  JumpMode(ModeId mode, const JumpControllerConfig& config, FlipPlans flips = {});
   ModeId id() const override { return mode_; }
   const char* check(const HighLevelCommand& command) const override;
   StartRefusal start_refusal(const RobotState& state, const HighLevelCommand& command) const override;
@@ -84,10 +90,12 @@ class JumpMode final : public Mode {
  private:
   // a played flip before its landing (the controller lands it)
   bool flipping() const { return flip_.stage() != FlipStage::Idle && !flip_.done(); }
+  // the plan of a flip id, or nullptr (not a flip, or no file)
+  const FlipTrajectory* flip_plan(int gait_id) const;
 
   ModeId mode_;
   JumpController controller_;
-  std::optional<FlipTrajectory> back_flip_;
+  FlipPlans flips_;
   FlipRun flip_;
   double flip_time_s_ = 0.0;  // the newest tick's time while flipping (for the progress bar)
   int gait_ = 0;

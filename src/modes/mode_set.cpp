@@ -27,13 +27,17 @@ WalkingGaitsConfig walking_config(const ModeSetConfig& config) {
   return walking;
 }
 
-// the back flip's file, read once with its reader's precise reason (throws std::invalid_argument)
-std::optional<FlipTrajectory> back_flip(const ModeSetConfig& config) {
-  if (config.back_flip_path.empty()) return std::nullopt;
+// a flip's file, read once with its reader's precise reason (throws std::invalid_argument)
+std::optional<FlipTrajectory> flip_file(const std::string& path, const char* name) {
+  if (path.empty()) return std::nullopt;
   std::string error;
-  std::optional<FlipTrajectory> trajectory = read_flip_trajectory(config.back_flip_path, robot::kTorqueMaxNm, error);
-  if (!trajectory) throw std::invalid_argument("back flip: " + error);
+  std::optional<FlipTrajectory> trajectory = read_flip_trajectory(path, robot::kTorqueMaxNm, error);
+  if (!trajectory) throw std::invalid_argument(std::string(name) + ": " + error);
   return trajectory;
+}
+
+FlipPlans flip_plans(const ModeSetConfig& config) {
+  return {flip_file(config.back_flip_path, "back flip"), flip_file(config.front_flip_path, "front flip")};
 }
 
 JumpControllerConfig jump_config(const ModeSetConfig& config) {
@@ -63,7 +67,7 @@ ModeSet::ModeSet(const ModeSetConfig& config)
       locomotion_(gaits_),
       motions_(config.motions),
       motion_(motions_, {&pose_control_, &qp_stand_, &locomotion_, &recovery_stand_}, user_gait_slot_, user_gait_),
-      jump_(ModeId::Jump3d, jump_config(config), back_flip(config)),
+      jump_(ModeId::Jump3d, jump_config(config), flip_plans(config)),
       force_jump_(ModeId::ForceJump, jump_config(config)) {
   if (!config.robot_model_path.empty()) {
     two_leg_stand_ = std::make_unique<TwoLegStandMode>(two_leg_stand_config(config));

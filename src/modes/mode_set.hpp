@@ -38,9 +38,10 @@ struct ModeSetConfig {
   MotionLibrary motions;
   // the robot's MuJoCo model, on which mode 64's balance is designed; empty: mode 64 is not offered
   std::string robot_model_path;
-  // the back flip's plan (control/jump/flip_trajectory), read when the set is built; empty: 16/20
-  // is refused
+  // the flips' plans (control/jump/flip_trajectory), read when the set is built; empty: that flip
+  // (16/20 back, 16/21 front) is refused
   std::string back_flip_path;
+  std::string front_flip_path;
 };
 
 class ModeSet {

@@ -17,7 +17,7 @@ Eigen::Vector3d rpy_of(const GroundTruth& g) {
 
 }  // namespace
 
-FlipTrial run_back_flip_trial(const McConfig& config) {
+FlipTrial run_flip_trial(const McConfig& config, int flip_gait_id) {
   Mc mc = make_simulated_mc(config);
   LockstepClient client(mc);
   client.run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
@@ -25,7 +25,7 @@ FlipTrial run_back_flip_trial(const McConfig& config) {
   const GroundTruth before = mc.simulation().ground_truth();
   const JointArray<double> temperature_before = mc.loop().last_cycle().state.temperature_c;
   FlipTrial f;
-  client.run(high_level_command(ModeId::Jump3d, kBackFlipGaitId), 5.0, [&](const CycleRecord& record) {
+  client.run(high_level_command(ModeId::Jump3d, flip_gait_id), 5.0, [&](const CycleRecord& record) {
     const GroundTruth g = mc.simulation().ground_truth();
     f.turned_rad += g.angular_velocity_body[1] * mc.config().loop_period_s;
     for (std::size_t j = 0; j < kNumJoints; ++j) {

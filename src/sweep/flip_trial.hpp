@@ -1,6 +1,6 @@
-// One back flip (16/20) through the whole MC in lockstep, judged on the simulator's truth: what
-// the flip benchmark tabulates over its seeds and the Release stage's seeded test asserts, one
-// home for both (bench/flip_bench.cpp, tests/sweep/flip_trial_test.cpp).
+// One flip (16/20 back, 16/21 front) through the whole MC in lockstep, judged on the simulator's
+// truth: what the flip benchmark tabulates over its seeds and the Release stage's seeded tests
+// assert, one home for both (bench/flip_bench.cpp, tests/sweep/flip_trial_test.cpp).
 #pragma once
 
 #include "loop/mc_config.hpp"
@@ -19,7 +19,7 @@ struct FlipTrial {
 };
 
 // from config's robot lying at start: the recovery stand (3 s), the locomotion stand (1 s), then
-// the back flip for 5 s
-FlipTrial run_back_flip_trial(const McConfig& config);
+// the flip of flip_gait_id (kBackFlipGaitId or kFrontFlipGaitId, modes/jump_mode.hpp) for 5 s
+FlipTrial run_flip_trial(const McConfig& config, int flip_gait_id);
 
 }  // namespace cerebellum

@@ -233,13 +233,6 @@ TEST(McJumps, AFlipIsRefusedForLowBatteryBelowItsOwnThreshold) {
   EXPECT_GT(run.truth().position[2], 0.2);
 }
 
-TEST(McJumps, AFrontFlipIsRefusedAsUnavailable) {
-  JumpRun run;
-  run.client.run(jump_command(kFrontFlipGaitId), 0.3);
-  EXPECT_EQ(run.mc.machine().status().switch_status, SwitchStatus::BanTransition);
-  EXPECT_EQ(run.mc.machine().status().mode, 11);
-}
-
 TEST(McJumps, AClientThatVanishesMidJumpHasTheRobotLandBeforeItIsDamped) {
   JumpRun run;
   // the command, a heartbeat or two, then silence from the crouch on
