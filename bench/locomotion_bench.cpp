@@ -18,6 +18,7 @@
 #include <utility>
 #include <vector>
 
+#include "control/locomotion/gait_table.hpp"
 #include "loop/lockstep_client.hpp"
 #include "core/orientation.hpp"
 #include "loop/simulated_robot.hpp"
@@ -329,6 +330,15 @@ int main(int argc, char** argv) {
       {"yaw",
        [&] {
          return tracking_row("yaw 2.0 rad/s", 10, {0, 0, 2.0}, 2, 0.15, csv);
+       }},
+      // the flying trot's own lateral and yaw limits (the gait table's), issue 43's 5 %
+      {"lateral0.55",
+       [&] {
+         return tracking_row("lateral 0.55 m/s", kFlyingTrotGaitId, {0, 0.55, 0}, 1, 0.05, csv);
+       }},
+      {"yaw2.5",
+       [&] {
+         return tracking_row("yaw 2.5 rad/s", kFlyingTrotGaitId, {0, 0, 2.5}, 2, 0.05, csv);
        }},
       {"odometry", [&] { return odometry_row(csv); }},
       {"push5", [] { return push_row(5.0); }},

@@ -1,7 +1,7 @@
 #!/usr/bin/env bash
 # A video of each named motion (mode 62) or jump (mode 16), or of the two-leg stand (64): for
 # every id, the MC on the simulated robot records build/motions/motion_<id>.mp4
-# (build/jumps/jump_<id>.mp4, the back flip jump_20.mp4, build/two_legs/two_leg_0.mp4) while `cerebellum cmd`
+# (build/jumps/jump_<id>.mp4, the flips jump_20.mp4 and jump_21.mp4, build/two_legs/two_leg_0.mp4) while `cerebellum cmd`
 # stands the robot up and runs it, inside a private network namespace; the jump down a stair (9)
 # starts on a 10 cm landing (config/demo_stair.yaml). docs/motions.md and docs/jumps.md link the
 # files.
@@ -30,7 +30,7 @@ ids=("$@")
 if [[ ${#ids[@]} -eq 0 ]]; then
   case $kind in
     motion) ids=($(sed -n 's/^id = //p' "$root"/config/motions/*.toml)) ;;
-    jump) ids=(0 1 2 3 4 5 6 9 20) ;;  # 20: the back flip
+    jump) ids=(0 1 2 3 4 5 6 9 20 21) ;;  # 20, 21: the back and the front flip
     two_leg) ids=(0) ;;
   esac
 fi
