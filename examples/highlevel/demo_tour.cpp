@@ -1,7 +1,7 @@
 // The demo tour: drives the MC through its high-level LCM interface like a user program would:
-// stand up, tilt the body, walk a 1 m square, turn on the spot, jump forward, lie down. One progress line per
-// step; a closing report (steps done, distances from the MC's odometry, errors). Exit 0 only
-// when every step succeeded.
+// stand up, tilt the body, walk a 1 m square, turn on the spot, jump forward, a back flip (not in
+// the short tour), lie down. One progress line per step; a closing report (steps done, distances
+// from the MC's odometry, errors). Exit 0 only when every step succeeded.
 //   cerebellum_demo_tour [--short]     (--short: a smaller square, for CI)
 #include <cerebellum/highlevel_client.hpp>
 
@@ -160,6 +160,11 @@ int main(int argc, char** argv) {
   // stand settle first
   std::this_thread::sleep_for(milliseconds(1000));
   tour.reach("jump forward 30 cm (16, jump 4)", command(16, 4), 10);
+  if (!short_tour) {
+    // the flip too starts from a still stand: the jump's landing settles first
+    std::this_thread::sleep_for(milliseconds(1000));
+    tour.reach("back flip (16, jump 20)", command(16, 20), 10);
+  }
   tour.reach("lie down (7, gait 1)", command(7, 1), 10);
   client.stop();
   return tour.report();
