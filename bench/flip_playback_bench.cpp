@@ -17,10 +17,15 @@ int main(int argc, char** argv) {
   long first = 0, last = 0;
   double trace_every_s = 0.0;
   FlipPlayGains gains;  // the player's own unless asked (an experiment: the MC plays with its defaults)
-  for (int i = 1; i + 1 < argc; i += 2) {
+  for (int i = 1; i < argc; ++i) {
     const std::string option = argv[i];
-    const std::string value = argv[i + 1];
-    if (option == "--file") {
+    // Google Benchmark's arguments, which bench/run.sh passes to every benchmark
+    if (option.rfind("--benchmark_", 0) == 0) continue;
+    const std::string value = i + 1 < argc ? argv[++i] : "";
+    if (value.empty()) {
+      std::fprintf(stderr, "flip_playback_bench: %s needs a value\n", option.c_str());
+      return 2;
+    } else if (option == "--file") {
       path = value;
     } else if (option == "--seeds" && std::sscanf(value.c_str(), "%ld-%ld", &first, &last) == 2 && first <= last) {
     } else if (option == "--trace-every-s" && std::sscanf(value.c_str(), "%lf", &trace_every_s) == 1 && trace_every_s > 0.0) {
