@@ -63,8 +63,8 @@ bool known_mode(int mode) {
 bool is_jump(const ScriptedCommand& c) { return c.mode == static_cast<int>(ModeId::Jump3d); }
 bool is_motion(const ScriptedCommand& c) { return c.mode == static_cast<int>(ModeId::Motion); }
 
-// a jump of the table or a flip (the front flip is refused by the MC with its reason: a run may
-// test that)
+// a jump of the table or a flip (a flip whose file the MC did not load is refused there with its
+// reason: a run may test that)
 bool known_jump_id(int id) { return find_jump(id) != nullptr || id == kBackFlipGaitId || id == kFrontFlipGaitId; }
 
 std::string jump_ids() {
