@@ -6,6 +6,7 @@
 #include <random>
 
 #include "backend/mujoco_backend.hpp"
+#include "core/orientation.hpp"
 #include "core/robot_model.hpp"
 
 namespace cerebellum {
@@ -69,7 +70,7 @@ FlipPlaybackOutcome play_flip_on_simulation(const FlipTrajectory& trajectory, co
     if (setup.trace_every_s > 0.0 && tick % std::max(1L, std::lround(setup.trace_every_s / kTickS)) == 0) {
       const FlipSample planned = flip_sample_at(trajectory, t);
       const std::array<double, 4>& q = truth.quat;
-      const double roll = std::atan2(2.0 * (q[0] * q[1] + q[2] * q[3]), 1.0 - 2.0 * (q[1] * q[1] + q[2] * q[2]));
+      const double roll = rpy_from_quaternion(Eigen::Quaterniond(q[0], q[1], q[2], q[3])).x();
       std::printf("t %.3f phase %d | x %.3f (plan %.3f) z %.3f (plan %.3f) pitch turned %.2f (plan %.2f) roll %.2f | feet %d%d%d%d\n", t,
                   planned.phase, truth.position[0] - before.position[0], planned.trunk[0] - start.trunk[0], truth.position[2],
                   planned.trunk[1], outcome.pitch_turned_rad, planned.trunk[2] - start.trunk[2], roll, truth.foot_contact[0] ? 1 : 0,
