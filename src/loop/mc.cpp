@@ -25,6 +25,7 @@ ModeSetConfig mode_set_config(const McConfig& config) {
   modes.robot_model_path = config.robot.model_path;
   modes.back_flip_path = config.back_flip_path;
   modes.front_flip_path = config.front_flip_path;
+  modes.locomotion_limits = config.locomotion_limits;
   modes.motions = load_motion_library(config.motions);
   attach_user_gaits(modes.motions);
   return modes;

@@ -20,6 +20,7 @@
 #include "io/shm_lowlevel/shm_lowlevel_config.hpp"
 #include "io/udp_aliengo/udp_aliengo_config.hpp"
 #include "modes/aliengo_session.hpp"
+#include "modes/command_ranges.hpp"
 #include "modes/locomotion_stand.hpp"
 #include "motions/motion_folder.hpp"
 #include "safety/command_guard.hpp"
@@ -61,6 +62,9 @@ struct McConfig {
   // front) is refused
   std::string back_flip_path;
   std::string front_flip_path;
+  // mode 11's clamps (section locomotion_limits:): the product's by default; config/extended.yaml
+  // goes beyond them (docs/locomotion.md, "Beyond the product")
+  LocomotionLimits locomotion_limits;
   SimTruthConfig sim_truth;              // simulation only
   SimControlConfig sim_command;          // simulation only
 };

@@ -1,28 +1,31 @@
 #include "modes/command_ranges.hpp"
 
 #include <algorithm>
-#include <array>
 
-#include "control/locomotion/gait_table.hpp"
 #include "core/joint_layout.hpp"
 
 namespace cerebellum {
 
 double Range::clamp(double value) const { return std::clamp(value, lower, upper); }
 
-const VelocityLimits* locomotion_velocity_limits(int gait_id) {
-  // the stepping gaits' limits as Eigen vectors, built once, in the order of the gait table
-  static const std::array<VelocityLimits, kGaitTable.size()> limits = [] {
-    std::array<VelocityLimits, kGaitTable.size()> all;
-    for (std::size_t i = 0; i < kGaitTable.size(); ++i) {
-      const GaitSpec& gait = kGaitTable[i];
-      all[i] = {Eigen::Vector3d(gait.velocity_min.data()), Eigen::Vector3d(gait.velocity_max.data())};
-    }
-    return all;
-  }();
+LocomotionLimits::LocomotionLimits() {
+  for (std::size_t i = 0; i < kGaitTable.size(); ++i) {
+    const GaitSpec& gait = kGaitTable[i];
+    velocity_[i] = {Eigen::Vector3d(gait.velocity_min.data()), Eigen::Vector3d(gait.velocity_max.data())};
+  }
+}
+
+const VelocityLimits* LocomotionLimits::velocity(int gait_id) const {
   const GaitSpec* gait = find_gait(gait_id);
   if (gait == nullptr || !gait_steps(*gait)) return nullptr;
-  return &limits[static_cast<std::size_t>(gait - kGaitTable.data())];
+  return &velocity_[static_cast<std::size_t>(gait - kGaitTable.data())];
+}
+
+bool LocomotionLimits::set_velocity(int gait_id, const VelocityLimits& limits) {
+  const GaitSpec* gait = find_gait(gait_id);
+  if (gait == nullptr || !gait_steps(*gait)) return false;
+  velocity_[static_cast<std::size_t>(gait - kGaitTable.data())] = limits;
+  return true;
 }
 
 int lifted_leg_from_contact(int contact) {

@@ -2,7 +2,11 @@
 // their sources), and the decoding of the contact bits and the lifted foot's offset.
 #pragma once
 
+#include <array>
+
 #include <Eigen/Core>
+
+#include "control/locomotion/gait_table.hpp"
 
 #include "core/robot_model.hpp"
 #include "core/high_level_command.hpp"
@@ -70,13 +74,38 @@ struct VelocityLimits {
   Eigen::Vector3d min;  // vx, vy (m/s), yaw rate (rad/s)
   Eigen::Vector3d max;
 };
-// nullptr for gaits without velocity limits (stand gaits, user gaits, unknown ids)
-const VelocityLimits* locomotion_velocity_limits(int gait_id);
 // mode 11 swing height, front and rear: the reference's 0..0.06 m with a floor of 5 mm (a documented
 // clamp, docs/locomotion.md): a trot 3 at 0.3 m/s for 4 s after a stand covers 1.14 m at 60 mm,
 // 1.07 m at 5 mm, 1.04 m at 4 mm, 0.84 m at 3 mm, 0.32 m at 2 mm and 0.16 m at 0 or 1 mm, where
 // the swing feet (their apex tracks some 2.5 mm below the target) scuff the ground
 inline constexpr Range kStepHeightRange{0.005, 0.06};
+
+// the widest an MC configured beyond the product (section locomotion_limits:) may set: past these
+// the values are no limits a controller of this robot could honour, so a file asking more is
+// refused. Forward/backward, lateral (m/s), yaw rate (rad/s); swing height (m, under the hip: the
+// leg is 0.4 m long and stands at 0.25 m)
+inline constexpr double kExtendedForwardSpeedCeilingMPerS = 3.5;
+inline constexpr double kExtendedLateralSpeedCeilingMPerS = 1.0;
+inline constexpr double kExtendedYawRateCeilingRadPerS = 4.0;
+inline constexpr double kExtendedStepHeightCeilingM = 0.15;
+
+// what mode 11 clamps a command's velocity and swing height to: the product's (the gait table's
+// and kStepHeightRange) by default; config/extended.yaml widens them (docs/locomotion.md, "Beyond
+// the product")
+class LocomotionLimits {
+ public:
+  LocomotionLimits();  // the product's
+  // nullptr for gaits without velocity limits (stand gaits, user gaits, unknown ids)
+  const VelocityLimits* velocity(int gait_id) const;
+  // replaces a stepping gait's limits; false (and no change) for a gait without
+  bool set_velocity(int gait_id, const VelocityLimits& limits);
+  const Range& step_height() const { return step_height_; }
+  void set_step_height(const Range& range) { step_height_ = range; }
+
+ private:
+  std::array<VelocityLimits, kGaitTable.size()> velocity_;
+  Range step_height_ = kStepHeightRange;
+};
 
 // the lifted foot's offset from its foothold (front legs: foot_pose[0..2], rear: [3..5])
 struct FootOffsetRanges {

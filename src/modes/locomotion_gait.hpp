@@ -4,6 +4,7 @@
 
 #include <array>
 #include <cstdint>
+#include <optional>
 
 #include <Eigen/Core>
 
@@ -22,6 +23,9 @@ struct LocomotionCommand {
   double pitch_rad = 0.0;
   double height_m = kDefaultBodyHeightM;
   std::array<double, 2> step_height_m{};  // front, rear
+  // the velocity limits the command was clamped to (LocomotionLimits): the gait table's unless the
+  // MC is configured beyond the product; none for gaits without (stands, user gaits)
+  std::optional<VelocityLimits> velocity_limits;
   std::int32_t value = 0;
   std::int32_t duration_ms = 0;
   // set by gait 1 while its trot catches a push (LocomotionTarget::catching_push)

@@ -31,19 +31,21 @@ const char* unavailable_gait_reason(int gait_id) {
   return "mode 11 has no such gait";
 }
 
-LocomotionMode::LocomotionMode(const GaitRegistry& gaits, const LocomotionStandRanges& ranges)
-    : gaits_(gaits), ranges_(ranges) {}
+LocomotionMode::LocomotionMode(const GaitRegistry& gaits, const LocomotionLimits& limits,
+                               const LocomotionStandRanges& ranges)
+    : gaits_(gaits), limits_(limits), ranges_(ranges) {}
 
 LocomotionCommand LocomotionMode::clamped(const HighLevelCommand& command) const {
   LocomotionCommand c;
   c.gait_id = command.gait_id;
-  if (const VelocityLimits* limits = locomotion_velocity_limits(command.gait_id)) {
+  if (const VelocityLimits* limits = limits_.velocity(command.gait_id)) {
     const Eigen::Vector3d wanted(command.vel_des[0], command.vel_des[1], command.vel_des[2]);
     c.velocity = wanted.cwiseMax(limits->min).cwiseMin(limits->max);
+    c.velocity_limits = *limits;
   }
   c.pitch_rad = body_pitch_from_command(ranges_.pitch.clamp(command.rpy_des[1]));
   c.height_m = command.pos_des[2] > 0.0f ? ranges_.height.clamp(command.pos_des[2]) : ranges_.default_height_m;
-  c.step_height_m = {kStepHeightRange.clamp(command.step_height[0]), kStepHeightRange.clamp(command.step_height[1])};
+  c.step_height_m = {limits_.step_height().clamp(command.step_height[0]), limits_.step_height().clamp(command.step_height[1])};
   c.value = command.value;
   c.duration_ms = command.duration;
   c.raw = command;

@@ -12,7 +12,8 @@ namespace cerebellum {
 
 class LocomotionMode final : public Mode {
  public:
-  explicit LocomotionMode(const GaitRegistry& gaits, const LocomotionStandRanges& ranges = {});
+  explicit LocomotionMode(const GaitRegistry& gaits, const LocomotionLimits& limits = {},
+                          const LocomotionStandRanges& ranges = {});
   ModeId id() const override { return ModeId::Locomotion; }
   const char* check(const HighLevelCommand& command) const override;
   void enter(const RobotState& state, const HighLevelCommand& command) override;
@@ -29,6 +30,7 @@ class LocomotionMode final : public Mode {
 
  private:
   const GaitRegistry& gaits_;
+  LocomotionLimits limits_;
   LocomotionStandRanges ranges_;
   LocomotionGait* running_ = nullptr;
   int gait_id_ = 1;

@@ -64,7 +64,7 @@ ModeSet::ModeSet(const ModeSetConfig& config)
       passive_trot_(walking_, PassiveFollowConfig{}, config.loop_period_s),
       push_recovery_stand_(walking_, PushRecoveryStandConfig{}, config.loop_period_s),
       user_gait_(walking_, user_gait_slot_),
-      locomotion_(gaits_),
+      locomotion_(gaits_, config.locomotion_limits),
       motions_(config.motions),
       motion_(motions_, {&pose_control_, &qp_stand_, &locomotion_, &recovery_stand_}, user_gait_slot_, user_gait_),
       jump_(ModeId::Jump3d, jump_config(config), flip_plans(config)),

@@ -42,6 +42,8 @@ struct ModeSetConfig {
   // (16/20 back, 16/21 front) is refused
   std::string back_flip_path;
   std::string front_flip_path;
+  // mode 11's velocity and swing-height clamps: the product's unless configured beyond it
+  LocomotionLimits locomotion_limits;
 };
 
 class ModeSet {

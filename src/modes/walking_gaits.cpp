@@ -10,10 +10,17 @@ namespace cerebellum {
 LocomotionTarget locomotion_target_from(const LocomotionCommand& command) {
   LocomotionTarget target;
   target.gait = *gait_pattern(command.gait_id);
+  // the limits the mode clamped to, which the controller holds its ramp and gait changes within
+  if (command.velocity_limits) {
+    for (int axis = 0; axis < 3; ++axis) {
+      target.gait.velocity_min[static_cast<std::size_t>(axis)] = command.velocity_limits->min[axis];
+      target.gait.velocity_max[static_cast<std::size_t>(axis)] = command.velocity_limits->max[axis];
+    }
+  }
   target.velocity = command.velocity;
   target.height_m = command.height_m;
   target.pitch_rad = command.pitch_rad;
-  // as commanded: LocomotionMode::clamped has put them into kStepHeightRange
+  // as commanded: LocomotionMode::clamped has put them into its LocomotionLimits
   target.step_height_front_m = command.step_height_m[0];
   target.step_height_rear_m = command.step_height_m[1];
   target.vertical_legs = (command.value & 0b10) != 0;

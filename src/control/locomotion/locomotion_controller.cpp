@@ -348,7 +348,11 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
     // the cycle for the faster of the ramped and the commanded speed: the cycle changes only where
     // one begins, and the slowest (0.72 s) kept while the ramp sped the body up to 1 m/s carried
     // its stance feet 0.3 m
-    next = variable_trot_pattern(std::max(stride_speed(velocity_), stride_speed(target_.velocity)));
+    // (the cycle is the table's; the limits stay the commanded pattern's)
+    GaitPattern adapted = variable_trot_pattern(std::max(stride_speed(velocity_), stride_speed(target_.velocity)));
+    adapted.velocity_min = next.velocity_min;
+    adapted.velocity_max = next.velocity_max;
+    next = adapted;
   }
   if (next.id == scheduler_.pattern().id && next.period_segments == scheduler_.pattern().period_segments) return;
   if (steps(scheduler_.pattern())) {
