@@ -166,7 +166,7 @@ McConfig load_config(const std::string& path) {
   if (root.IsNull()) return config;
   const SectionReader top(root, path, "<top>",
                           {"mc", "robot", "loop", "realtime", "stand_up", "safety", "shm", "motor_sdk", "highlevel", "aliengo",
-                           "motions", "sim_truth", "sim_command", "locomotion_limits"});
+                           "motions", "sim_truth", "sim_command", "locomotion", "locomotion_limits"});
   const fs::path base_dir = fs::absolute(path).parent_path();
 
   if (root["mc"]) {
@@ -249,6 +249,10 @@ McConfig load_config(const std::string& path) {
   }
   if (root["sim_command"]) {
     SectionReader(root["sim_command"], path, "sim_command", {"enabled"}).flag("enabled", config.sim_command.enabled);
+  }
+  if (root["locomotion"]) {
+    SectionReader(root["locomotion"], path, "locomotion", {"velocity_trim_gain_per_s"})
+        .number("velocity_trim_gain_per_s", config.velocity_trim_gain_per_s, 0.0, 10.0);
   }
   if (root["locomotion_limits"]) read_locomotion_limits_section(root["locomotion_limits"], path, config.locomotion_limits);
   check_robot_fits(root, path, config);

@@ -10,6 +10,7 @@
 #include "loop/robot_kind.hpp"
 #include "backend/latent_link_backend.hpp"
 #include "backend/mujoco_backend.hpp"
+#include "control/locomotion/locomotion_controller.hpp"
 #include "control/stand_up_controller.hpp"
 #include "io/lcm_highlevel/lcm_highlevel_config.hpp"
 #include "io/lcm_motor_sdk/lcm_motor_sdk_config.hpp"
@@ -65,6 +66,9 @@ struct McConfig {
   // mode 11's clamps (section locomotion_limits:): the product's by default; config/extended.yaml
   // goes beyond them (docs/locomotion.md, "Beyond the product")
   LocomotionLimits locomotion_limits;
+  // locomotion.velocity_trim_gain_per_s: the walking controller's integral action on its velocity
+  // error (1/s; 0, the default: off, as tuned for the product's range)
+  double velocity_trim_gain_per_s = LocomotionConfig{}.velocity_trim_gain_per_s;
   SimTruthConfig sim_truth;              // simulation only
   SimControlConfig sim_command;          // simulation only
 };

@@ -24,6 +24,7 @@ WalkingGaitsConfig walking_config(const ModeSetConfig& config) {
   walking.locomotion.tick_s = config.loop_period_s;
   walking.locomotion.ticks_per_segment = static_cast<int>(std::lround(kGaitSegmentS / config.loop_period_s));
   walking.failure_damping_kd = config.damping_kd;
+  walking.locomotion.velocity_trim_gain_per_s = config.velocity_trim_gain_per_s;
   return walking;
 }
 

@@ -1,6 +1,8 @@
 // Configuration: defaults, overrides, and a clear message for every kind of bad input.
 #include "loop/mc_config.hpp"
 
+#include "control/locomotion/gait_table.hpp"
+
 #include <gtest/gtest.h>
 
 #include <sys/stat.h>
@@ -53,6 +55,61 @@ TEST(McConfig, FileOverridesDefaultsAndResolvesRelativeModelPaths) {
   EXPECT_TRUE(config.robot.noise.enabled);
   EXPECT_DOUBLE_EQ(config.stand_up.kp, 80.0);
   EXPECT_DOUBLE_EQ(config.stand_up.kd, 1.5);
+}
+
+TEST(McConfig, WithoutALocomotionLimitsSectionModeElevenKeepsTheProductsClamps) {
+  const McConfig config = default_config();
+  const VelocityLimits* trot = config.locomotion_limits.velocity(kFlyingTrotGaitId);
+  ASSERT_NE(trot, nullptr);
+  for (int axis = 0; axis < 3; ++axis) {
+    EXPECT_DOUBLE_EQ(trot->max[axis], find_gait(kFlyingTrotGaitId)->velocity_max[static_cast<std::size_t>(axis)]);
+    EXPECT_DOUBLE_EQ(trot->min[axis], find_gait(kFlyingTrotGaitId)->velocity_min[static_cast<std::size_t>(axis)]);
+  }
+  EXPECT_DOUBLE_EQ(config.locomotion_limits.step_height().upper, kStepHeightRange.upper);
+  EXPECT_DOUBLE_EQ(config.velocity_trim_gain_per_s, 0.0) << "the product's tuning";
+}
+
+TEST(McConfig, LocomotionLimitsWidenOneGaitAndKeepTheOthersAndTheUnnamedAxes) {
+  const std::string path = write_file("limits.yaml",
+                                      "locomotion_limits:\n  step_height_max_m: 0.1\n"
+                                      "  gait_10: {forward_max_m_s: 2.5, yaw_rate_max_rad_s: 3}\n"
+                                      "locomotion: {velocity_trim_gain_per_s: 1.5}\n");
+  const McConfig config = load_config(path);
+  const VelocityLimits& trot = *config.locomotion_limits.velocity(kFlyingTrotGaitId);
+  const GaitSpec& table = *find_gait(kFlyingTrotGaitId);
+  EXPECT_DOUBLE_EQ(trot.max.x(), 2.5);
+  EXPECT_DOUBLE_EQ(trot.min.x(), table.velocity_min[0]) << "backward not named: the product's";
+  EXPECT_DOUBLE_EQ(trot.max.y(), table.velocity_max[1]);
+  EXPECT_DOUBLE_EQ(trot.max.z(), 3.0);
+  EXPECT_DOUBLE_EQ(trot.min.z(), -3.0) << "turning is symmetric";
+  EXPECT_DOUBLE_EQ(config.locomotion_limits.velocity(3)->max.x(), find_gait(3)->velocity_max[0]);
+  EXPECT_DOUBLE_EQ(config.locomotion_limits.step_height().upper, 0.1);
+  EXPECT_DOUBLE_EQ(config.locomotion_limits.step_height().lower, kStepHeightRange.lower);
+  EXPECT_DOUBLE_EQ(config.velocity_trim_gain_per_s, 1.5);
+}
+
+TEST(McConfig, LocomotionLimitsRefuseStandGaitsUnknownAxesAndSpeedsPastTheCeiling) {
+  std::string error = load_error("locomotion_limits:\n  gait_1: {forward_max_m_s: 1}\n");
+  EXPECT_NE(error.find("locomotion_limits.gait_1 is not a known key"), std::string::npos) << error;
+  EXPECT_NE(error.find("gait_10"), std::string::npos) << "names the gaits it accepts: " << error;
+  error = load_error("locomotion_limits:\n  gait_10: {forward_m_s: 2}\n");
+  EXPECT_NE(error.find("locomotion_limits.gait_10.forward_m_s is not a known key"), std::string::npos) << error;
+  error = load_error("locomotion_limits:\n  gait_10: {forward_max_m_s: 40}\n");
+  EXPECT_NE(error.find("locomotion_limits.gait_10.forward_max_m_s must be in [0, 3.5]"), std::string::npos) << error;
+  error = load_error("locomotion_limits:\n  gait_10: {lateral_max_m_s: .nan}\n");
+  EXPECT_NE(error.find("locomotion_limits.gait_10.lateral_max_m_s must be in"), std::string::npos) << error;
+  error = load_error("locomotion_limits: {step_height_max_m: 0.3}\n");
+  EXPECT_NE(error.find("locomotion_limits.step_height_max_m must be in [0.005, 0.15]"), std::string::npos) << error;
+  error = load_error("locomotion: {velocity_trim_gain_per_s: -1}\n");
+  EXPECT_NE(error.find("locomotion.velocity_trim_gain_per_s must be in [0, 10]"), std::string::npos) << error;
+}
+
+TEST(McConfig, TheShippedExtendedFileLoadsAndGoesPastTheProductOnlyWhereItSays) {
+  const McConfig config = load_config(std::string(CEREBELLUM_SOURCE_DIR) + "/config/extended.yaml");
+  EXPECT_GT(config.locomotion_limits.velocity(kFlyingTrotGaitId)->max.x(),
+            find_gait(kFlyingTrotGaitId)->velocity_max[0]);
+  EXPECT_GT(config.velocity_trim_gain_per_s, 0.0);
+  EXPECT_NE(config.robot.model_path.find("cyberdog2.xml"), std::string::npos);
 }
 
 TEST(McConfig, UnknownKeyIsNamedWithTheAcceptedKeys) {

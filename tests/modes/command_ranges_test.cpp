@@ -7,6 +7,7 @@
 #include "modes/locomotion_gait.hpp"
 #include "modes/locomotion_mode.hpp"
 #include "modes/qp_stand_mode.hpp"
+#include "modes/walking_gaits.hpp"
 
 namespace cerebellum {
 namespace {
@@ -72,6 +73,35 @@ TEST(CommandRanges, LocomotionClampsVelocityPerGaitAndStandFields) {
   // a stand has no velocity
   c.gait_id = 1;
   EXPECT_TRUE(mode.clamped(c).velocity.isZero());
+}
+
+TEST(CommandRanges, ConfiguredLimitsWidenTheClampAndTravelWithTheCommandToTheController) {
+  LocomotionLimits limits;
+  EXPECT_FALSE(limits.set_velocity(1, {Eigen::Vector3d::Constant(-1), Eigen::Vector3d::Constant(1)}))
+      << "a stand has no velocity to widen";
+  EXPECT_FALSE(limits.set_velocity(55, {Eigen::Vector3d::Constant(-1), Eigen::Vector3d::Constant(1)}));
+  ASSERT_TRUE(limits.set_velocity(10, {Eigen::Vector3d(-1.2, -0.55, -2.5), Eigen::Vector3d(2.5, 0.55, 2.5)}));
+  limits.set_step_height({kStepHeightRange.lower, 0.1});
+  GaitRegistry gaits;
+  LocomotionMode mode(gaits, limits);
+  HighLevelCommand c;
+  c.mode = 11;
+  c.gait_id = 10;
+  c.vel_des = {3.0f, 0.0f, 0.0f};
+  c.step_height = {0.12f, 0.08f};
+  const LocomotionCommand l = mode.clamped(c);
+  EXPECT_DOUBLE_EQ(l.velocity.x(), 2.5);
+  ASSERT_TRUE(l.velocity_limits.has_value());
+  EXPECT_DOUBLE_EQ(l.velocity_limits->max.x(), 2.5);
+  EXPECT_DOUBLE_EQ(l.step_height_m[0], 0.1);
+  EXPECT_NEAR(l.step_height_m[1], 0.08, 1e-6);
+  // the controller's own clamp and gait changes read the limits the mode clamped to
+  const LocomotionTarget target = locomotion_target_from(l);
+  EXPECT_DOUBLE_EQ(target.gait.velocity_max[0], 2.5);
+  c.gait_id = 3;  // not widened: the product's
+  EXPECT_DOUBLE_EQ(mode.clamped(c).velocity.x(), find_gait(3)->velocity_max[0]);
+  c.gait_id = 1;
+  EXPECT_FALSE(mode.clamped(c).velocity_limits.has_value());
 }
 
 TEST(CommandRanges, UnregisteredGaitsAreRefusedWithTheirName) {

@@ -47,6 +47,7 @@ void LocomotionController::reset(const RobotState& state) {
   velocity_before_.setZero();
   yaw_des_ = state.rpy.z();
   position_des_ = state.position_world.head<2>();
+  velocity_trim_.setZero();
   height_correction_m_ = 0.0;
   tick_in_segment_ = 0;
   was_stance_.fill(true);
@@ -114,6 +115,22 @@ void LocomotionController::ramp_velocity() {
       (velocity_ - velocity_before_) * std::min(1.0, config_.tick_s / config_.push_reference_time_constant_s);
 }
 
+void LocomotionController::update_velocity_trim(const RobotState& state) {
+  if (config_.velocity_trim_gain_per_s <= 0.0 || !steps(scheduler_.pattern()) || scheduler_.playing()) {
+    // no drag to learn standing or on a user gait's own steps
+    velocity_trim_.setZero();
+    return;
+  }
+  const Eigen::Vector2d error = velocity_.head<2>() - state.velocity_body.head<2>();
+  // a push is no drag: the trim is kept through it, not wound up by it
+  const bool learning = error.norm() <= config_.velocity_trim_error_window_m_s;
+  for (int axis = 0; axis < 2; ++axis) {
+    const double limit = config_.velocity_trim_max_fraction * std::abs(velocity_[axis]);
+    const double step = learning ? config_.velocity_trim_gain_per_s * error[axis] * config_.tick_s : 0.0;
+    velocity_trim_[axis] = std::clamp(velocity_trim_[axis] + step, -limit, limit);
+  }
+}
+
 Eigen::Vector3d LocomotionController::hip_on_ground_world(std::size_t leg, const RobotState& state, double ahead_s,
                                                           double yaw_ahead_s) const {
   const double half_width = target_.vertical_legs ? config_.vertical_leg_half_width_m : config_.pigeon_toe_half_width_m;
@@ -155,7 +172,8 @@ void LocomotionController::post_mpc(const RobotState& state) {
   Eigen::Vector3d position = start;
   for (int k = 0; k < kMpcHorizon; ++k) {
     const double yaw_k = yaw + yaw_offset + velocity_.z() * (k + 1) * dt;
-    const Eigen::Vector3d velocity_world = yaw_rotation(yaw_k) * Eigen::Vector3d(velocity_.x(), velocity_.y(), 0.0);
+    const Eigen::Vector3d velocity_world =
+        yaw_rotation(yaw_k) * Eigen::Vector3d(velocity_.x() + velocity_trim_.x(), velocity_.y() + velocity_trim_.y(), 0.0);
     in.com_shift[k] = position - start;
     position += velocity_world * dt;
     auto& x = in.x_ref[k];
@@ -395,6 +413,7 @@ void LocomotionController::play(std::shared_ptr<const ContactSequence> sequence,
 
 void LocomotionController::compute(const RobotState& state, JointCommand& command) {
   ramp_velocity();
+  update_velocity_trim(state);
   yaw_des_ = wrap_angle(yaw_des_ + velocity_.z() * config_.tick_s);
   // where the commanded velocity would have taken the trunk, at most a set distance ahead or behind
   // (the MPC's only integral action: leg friction and swing momentum otherwise slow it down)
