@@ -7,7 +7,9 @@
 // Tuning seeds and fresh seeds are separate ranges: say which a figure comes from.
 //   terrain_bench                       the page's table (docs/terrain.md) on the fresh seeds
 //   terrain_bench --terrain=slope:20 --speed=0.4 [--gait=27] [--seeds=1-10] [--step_height=0.08]
-//                 [--to_x=10] [--seconds=40] [--trace]      one case (exit 0 when every seed crossed)
+//                 [--to_x=10] [--seconds=40] [--trace] [--config=FILE]
+//                                       one case (exit 0 when every seed crossed); --config: the
+//                                       MC's configuration (config/extended.yaml: beyond the product)
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
@@ -34,6 +36,7 @@ struct Options {
   double to_x_m = 10.0;
   double seconds = 40.0;
   bool trace = false;  // a line every 0.25 s of the run: where, how high, how tilted, which mode
+  std::string config_path;  // empty: the defaults (the product's clamps)
 };
 
 enum class Outcome { Crossed, Fell, Stuck };
@@ -49,7 +52,7 @@ constexpr double kLowestTrunk_m = 0.08;    // above the ground under it: lower i
 constexpr double kStartOffset_m = 0.05;    // the start's lateral spread across seeds
 
 RunResult run_once(const Options& options, int seed) {
-  McConfig config = default_config();
+  McConfig config = options.config_path.empty() ? default_config() : load_config(options.config_path);
   config.startup = Startup::Off;
   config.robot.model_path = std::string(CEREBELLUM_MODEL_DIR) + "/cyberdog2.xml";
   config.robot.terrain = parse_terrain_spec(options.terrain);
@@ -162,6 +165,8 @@ int main(int argc, char** argv) {
       options.to_x_m = std::stod(value);
     } else if (read_option(arg, "seconds", value)) {
       options.seconds = std::stod(value);
+    } else if (read_option(arg, "config", value)) {
+      options.config_path = value;
     } else if (arg == "--trace") {
       options.trace = true;
     } else if (arg.rfind("--benchmark", 0) == 0) {

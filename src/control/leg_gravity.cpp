@@ -114,4 +114,11 @@ Eigen::Matrix3d leg_mass_jacobian(std::size_t leg, const Eigen::Vector3d& q) {
   return map;
 }
 
+Eigen::Vector3d ground_force_on_foot_world(const RobotState& state, std::size_t leg) {
+  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -robot::kGravityMPerS2);
+  const Eigen::Vector3d q = leg_vector(state.q, leg);
+  const Eigen::Vector3d tau = leg_vector(state.tau, leg) - leg_gravity_torque(leg, q, gravity_body);
+  return state.orientation * -foot_force_from_torque(foot_jacobian(leg, q), tau);
+}
+
 }  // namespace cerebellum

@@ -8,6 +8,8 @@
 
 #include <Eigen/Core>
 
+#include "core/robot_state.hpp"
+
 namespace cerebellum {
 
 // q: abad, hip, knee (SDK convention); gravity_body: gravity vector in the body frame (m/s^2)
@@ -31,5 +33,10 @@ Eigen::Vector3d stand_com_in_body();
 // the leg's linear momentum relative to the trunk is this times the joint velocities. Read from
 // the gravity torques (they are its transpose applied to g), so the two share one mass model.
 Eigen::Matrix3d leg_mass_jacobian(std::size_t leg, const Eigen::Vector3d& q);
+
+// the ground's force on a foot (world, N) from the leg's joint torques beyond its own weight:
+// statics (tau = -J^T f), the leg's accelerations not taken out; what a landing or a swing foot
+// meeting something is told by
+Eigen::Vector3d ground_force_on_foot_world(const RobotState& state, std::size_t leg);
 
 }  // namespace cerebellum

@@ -5,6 +5,8 @@
 #include <Eigen/Core>
 #include <cstddef>
 
+#include "core/joint_layout.hpp"
+
 namespace cerebellum {
 
 using Vec3 = Eigen::Vector3d;
@@ -14,6 +16,12 @@ struct LegIkResult {
   Vec3 q;          // abad, hip, knee (rad)
   bool reachable;  // false: the target was out of reach and q points at the nearest reachable foot
 };
+
+// one leg's three values (abad, hip, knee) of a joint array
+inline Vec3 leg_vector(const JointArray<double>& values, std::size_t leg) {
+  const std::size_t j = kJointsPerLeg * leg;
+  return {values[j], values[j + 1], values[j + 2]};
+}
 
 // position of the abad joint in the body frame
 Vec3 hip_position(std::size_t leg);

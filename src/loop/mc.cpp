@@ -26,7 +26,7 @@ ModeSetConfig mode_set_config(const McConfig& config) {
   modes.back_flip_path = config.back_flip_path;
   modes.front_flip_path = config.front_flip_path;
   modes.locomotion_limits = config.locomotion_limits;
-  modes.velocity_trim_gain_per_s = config.velocity_trim_gain_per_s;
+  modes.locomotion = config.locomotion;
   modes.motions = load_motion_library(config.motions);
   attach_user_gaits(modes.motions);
   return modes;

@@ -251,8 +251,13 @@ McConfig load_config(const std::string& path) {
     SectionReader(root["sim_command"], path, "sim_command", {"enabled"}).flag("enabled", config.sim_command.enabled);
   }
   if (root["locomotion"]) {
-    SectionReader(root["locomotion"], path, "locomotion", {"velocity_trim_gain_per_s"})
-        .number("velocity_trim_gain_per_s", config.velocity_trim_gain_per_s, 0.0, 10.0);
+    const SectionReader s(root["locomotion"], path, "locomotion",
+                          {"velocity_trim_gain_per_s", "early_touchdown_force_n", "foothold_on_own_ground",
+                           "late_touchdown_reach_m"});
+    s.number("velocity_trim_gain_per_s", config.locomotion.velocity_trim_gain_per_s, 0.0, 10.0);
+    s.number("early_touchdown_force_n", config.locomotion.early_touchdown_force_n, 0.0, 200.0);
+    s.flag("foothold_on_own_ground", config.locomotion.foothold_on_own_ground);
+    s.number("late_touchdown_reach_m", config.locomotion.late_touchdown_reach_m, 0.0, 0.2);
   }
   if (root["locomotion_limits"]) read_locomotion_limits_section(root["locomotion_limits"], path, config.locomotion_limits);
   check_robot_fits(root, path, config);

@@ -66,9 +66,9 @@ struct McConfig {
   // mode 11's clamps (section locomotion_limits:): the product's by default; config/extended.yaml
   // goes beyond them (docs/locomotion.md, "Beyond the product")
   LocomotionLimits locomotion_limits;
-  // locomotion.velocity_trim_gain_per_s: the walking controller's integral action on its velocity
-  // error (1/s; 0, the default: off, as tuned for the product's range)
-  double velocity_trim_gain_per_s = LocomotionConfig{}.velocity_trim_gain_per_s;
+  // the walking controller's settings (section locomotion: sets those beyond the product's tuning,
+  // velocity_trim_gain_per_s and early_touchdown_force_n; its tick follows loop_period_s)
+  LocomotionConfig locomotion;
   SimTruthConfig sim_truth;              // simulation only
   SimControlConfig sim_command;          // simulation only
 };

@@ -21,10 +21,10 @@ PureDamperConfig pure_damper_config(const ModeSetConfig& config) {
 
 WalkingGaitsConfig walking_config(const ModeSetConfig& config) {
   WalkingGaitsConfig walking;
+  walking.locomotion = config.locomotion;
   walking.locomotion.tick_s = config.loop_period_s;
   walking.locomotion.ticks_per_segment = static_cast<int>(std::lround(kGaitSegmentS / config.loop_period_s));
   walking.failure_damping_kd = config.damping_kd;
-  walking.locomotion.velocity_trim_gain_per_s = config.velocity_trim_gain_per_s;
   return walking;
 }
 

@@ -44,8 +44,8 @@ struct ModeSetConfig {
   std::string front_flip_path;
   // mode 11's velocity and swing-height clamps: the product's unless configured beyond it
   LocomotionLimits locomotion_limits;
-  // the walking controller's integral action on its velocity error (LocomotionConfig; 0: off)
-  double velocity_trim_gain_per_s = LocomotionConfig{}.velocity_trim_gain_per_s;
+  // the walking controller's settings (its tick is set from loop_period_s)
+  LocomotionConfig locomotion;
 };
 
 class ModeSet {

@@ -66,7 +66,8 @@ TEST(McConfig, WithoutALocomotionLimitsSectionModeElevenKeepsTheProductsClamps) 
     EXPECT_DOUBLE_EQ(trot->min[axis], find_gait(kFlyingTrotGaitId)->velocity_min[static_cast<std::size_t>(axis)]);
   }
   EXPECT_DOUBLE_EQ(config.locomotion_limits.step_height().upper, kStepHeightRange.upper);
-  EXPECT_DOUBLE_EQ(config.velocity_trim_gain_per_s, 0.0) << "the product's tuning";
+  EXPECT_DOUBLE_EQ(config.locomotion.velocity_trim_gain_per_s, 0.0) << "the product's tuning";
+  EXPECT_DOUBLE_EQ(config.locomotion.early_touchdown_force_n, 0.0);
 }
 
 TEST(McConfig, LocomotionLimitsWidenOneGaitAndKeepTheOthersAndTheUnnamedAxes) {
@@ -85,7 +86,7 @@ TEST(McConfig, LocomotionLimitsWidenOneGaitAndKeepTheOthersAndTheUnnamedAxes) {
   EXPECT_DOUBLE_EQ(config.locomotion_limits.velocity(3)->max.x(), find_gait(3)->velocity_max[0]);
   EXPECT_DOUBLE_EQ(config.locomotion_limits.step_height().upper, 0.1);
   EXPECT_DOUBLE_EQ(config.locomotion_limits.step_height().lower, kStepHeightRange.lower);
-  EXPECT_DOUBLE_EQ(config.velocity_trim_gain_per_s, 1.5);
+  EXPECT_DOUBLE_EQ(config.locomotion.velocity_trim_gain_per_s, 1.5);
 }
 
 TEST(McConfig, LocomotionLimitsRefuseStandGaitsUnknownAxesAndSpeedsPastTheCeiling) {
@@ -108,7 +109,7 @@ TEST(McConfig, TheShippedExtendedFileLoadsAndGoesPastTheProductOnlyWhereItSays) 
   const McConfig config = load_config(std::string(CEREBELLUM_SOURCE_DIR) + "/config/extended.yaml");
   EXPECT_GT(config.locomotion_limits.velocity(kFlyingTrotGaitId)->max.x(),
             find_gait(kFlyingTrotGaitId)->velocity_max[0]);
-  EXPECT_GT(config.velocity_trim_gain_per_s, 0.0);
+  EXPECT_GT(config.locomotion.velocity_trim_gain_per_s, 0.0);
   EXPECT_NE(config.robot.model_path.find("cyberdog2.xml"), std::string::npos);
 }
 

@@ -22,8 +22,12 @@ struct Crossing {
   double highest_ground_m = 0.0;  // the terrain under the trunk, as sim_truth reports it
 };
 
-Crossing walk_across(const std::string& terrain, double speed_m_s, double to_x_m, double seconds, unsigned seed) {
-  McConfig config = default_config();
+// the MC beyond the product, as shipped (config/extended.yaml)
+McConfig extended_config() { return load_config(std::string(CEREBELLUM_SOURCE_DIR) + "/config/extended.yaml"); }
+
+// step_height_m < 0: the gait's own
+Crossing walk_across(const std::string& terrain, double speed_m_s, double to_x_m, double seconds, unsigned seed,
+                     McConfig config = default_config(), double step_height_m = -1.0) {
   config.startup = Startup::Off;
   config.robot.terrain = parse_terrain_spec(terrain);
   config.robot.noise.enabled = true;
@@ -31,7 +35,9 @@ Crossing walk_across(const std::string& terrain, double speed_m_s, double to_x_m
   Mc mc = make_simulated_mc(config);
   LockstepClient(mc).run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
   Crossing out;
-  HeadingHoldWalk walk(mc, high_level_command(ModeId::Locomotion, kSlowTrotGaitId, speed_m_s));
+  HighLevelCommand command = high_level_command(ModeId::Locomotion, kSlowTrotGaitId, speed_m_s);
+  if (step_height_m >= 0.0) command.step_height = {static_cast<float>(step_height_m), static_cast<float>(step_height_m)};
+  HeadingHoldWalk walk(mc, command);
   out.time_s = walk.run(seconds, [&](const CycleRecord&) {
     const GroundTruth truth = mc.simulation().ground_truth();
     out.stayed_upright = out.stayed_upright && upright(truth);
@@ -56,6 +62,16 @@ TEST(McTerrainWalk, TheSlowTrotStepsUpAndDownAFourCentimetreStep) {
   EXPECT_TRUE(c.stayed_upright);
   EXPECT_TRUE(c.crossed) << "after " << c.time_s << " s";
   EXPECT_DOUBLE_EQ(c.highest_ground_m, 0.04);
+}
+
+// blind: the swing meets the step's top early (held there), aims at the ground it lifted from, and
+// reaches down off the far edge (LocomotionConfig's early and late touchdown)
+TEST(McTerrainWalk, TheExtendedConfigurationStepsUpAndDownAnEightCentimetreStepWithATenCentimetreSwing) {
+  const Crossing c = walk_across("step:0.08", 0.3, 4.0, 20.0, 7, extended_config(), 0.10);
+  EXPECT_TRUE(c.stayed_upright);
+  EXPECT_TRUE(c.crossed) << "after " << c.time_s << " s";
+  EXPECT_DOUBLE_EQ(c.highest_ground_m, 0.08);
+  EXPECT_GT(c.lowest_above_ground_m, 0.12);
 }
 
 TEST(McTerrainWalk, TheSlowTrotCrossesTwentyMetresOfThreeCentimetreRoughGroundAtHalfAMetrePerSecond) {

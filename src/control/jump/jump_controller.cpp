@@ -18,11 +18,6 @@ namespace {
 
 using robot::kGravityMPerS2;
 
-Eigen::Vector3d leg_vector(const JointArray<double>& values, std::size_t leg) {
-  const std::size_t j = kJointsPerLeg * leg;
-  return {values[j], values[j + 1], values[j + 2]};
-}
-
 void set_leg(JointCommand& command, std::size_t leg, const Eigen::Vector3d& q, const Eigen::Vector3d& qd, double kp,
              double kd, const Eigen::Vector3d& tau) {
   for (std::size_t k = 0; k < kJointsPerLeg; ++k) {
@@ -36,13 +31,6 @@ void set_leg(JointCommand& command, std::size_t leg, const Eigen::Vector3d& q, c
   }
 }
 
-// the vertical ground force on a foot (world), from its joint torques beyond the leg's own weight
-double vertical_foot_force_n(const RobotState& state, std::size_t leg) {
-  const Eigen::Vector3d gravity_body = state.orientation.conjugate() * Eigen::Vector3d(0.0, 0.0, -kGravityMPerS2);
-  const Eigen::Vector3d q = leg_vector(state.q, leg);
-  const Eigen::Vector3d tau = leg_vector(state.tau, leg) - leg_gravity_torque(leg, q, gravity_body);
-  return (state.orientation * -foot_force_from_torque(foot_jacobian(leg, q), tau)).z();
-}
 
 }  // namespace
 
@@ -350,7 +338,7 @@ bool JumpController::touched_down(const RobotState& state) const {
   if (t >= plan_.flight_duration_s + config_.touchdown_latest_extra_s) return true;
   if (t < config_.touchdown_earliest_fraction * plan_.flight_duration_s) return false;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    if (vertical_foot_force_n(state, leg) > config_.touchdown_force_n) return true;
+    if (ground_force_on_foot_world(state, leg).z() > config_.touchdown_force_n) return true;
   }
   return false;
 }

@@ -20,10 +20,6 @@ double approach(double current, double target, double max_step) {
   return current + std::clamp(target - current, -max_step, max_step);
 }
 
-Eigen::Vector3d leg_vector(const JointArray<double>& values, std::size_t leg) {
-  return {values[3 * leg], values[3 * leg + 1], values[3 * leg + 2]};
-}
-
 Eigen::Matrix3d yaw_rotation(double yaw) { return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
 
 }  // namespace
@@ -48,6 +44,9 @@ void LocomotionController::reset(const RobotState& state) {
   yaw_des_ = state.rpy.z();
   position_des_ = state.position_world.head<2>();
   velocity_trim_.setZero();
+  touched_early_.fill(false);
+  touching_ticks_.fill(0);
+  reaching_.fill(false);
   height_correction_m_ = 0.0;
   tick_in_segment_ = 0;
   was_stance_.fill(true);
@@ -91,7 +90,7 @@ ContactSchedule LocomotionController::contact_schedule() const {
   ContactSchedule schedule{};
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const LegPhase phase = scheduler_.leg_phase(leg);
-    schedule[leg] = {phase.stance ? 1.0 : 0.0, phase.stance_phase};
+    schedule[leg] = {phase.stance && !reaching_[leg] ? 1.0 : 0.0, phase.stance_phase};
   }
   return schedule;
 }
@@ -155,6 +154,10 @@ void LocomotionController::post_mpc(const RobotState& state) {
   const double pitch_ref = target_.pitch_rad + state.ground.pitch_along(yaw);
   const double roll_ref = user.roll_rad + state.ground.roll_along(yaw);
   in.contact = scheduler_.horizon_contacts<kMpcHorizon>();
+  // a foot still reaching for the ground carries nothing in this segment
+  for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+    if (reaching_[leg]) in.contact[0][leg] = false;
+  }
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
   // a stand that leans instead of stepping holds the centre of mass over the middle of its feet,
   // not where the trunk was when the stand began, and holds it there firmly; a user step that
@@ -268,6 +271,11 @@ Eigen::Vector3d LocomotionController::foothold_world(std::size_t leg, const LegP
   Eigen::Vector3d foothold = raibert_foothold(hip, state.velocity_world, velocity_des_world, velocity_before_world,
                                               velocity_.z(), state.rpy.z(), phase.stance_duration_s, target_.height_m,
                                               config_.foothold, target_.catching_push);
+  if (config_.foothold_on_own_ground) {
+    const Eigen::Vector3d& from = swing_start_[leg];  // the foot's centre where this swing began
+    foothold.z() = from.z() - robot::kFootRadius + state.ground.height_at(foothold.x(), foothold.y()) -
+                   state.ground.height_at(from.x(), from.y());
+  }
   foothold.z() += robot::kFootRadius;  // foot centre above the ground
   return foothold;
 }
@@ -282,9 +290,29 @@ void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& ph
   const double height = target_.user_step
                             ? target_.user_step->step_height_m[leg]
                             : lift * (is_front_leg(leg) ? target_.step_height_front_m : target_.step_height_rear_m);
-  const SwingPoint point =
+  SwingPoint point =
       swing_point(swing_start_[leg], foothold, height, phase.swing_phase, std::max(phase.swing_duration_s, 1e-3));
+  if (!touched_early_[leg] && config_.early_touchdown_force_n > 0.0) {
+    const Eigen::Vector3d foot_world = state.position_world + state.orientation * state.foot_position_body[leg];
+    const bool touching = phase.swing_phase > config_.early_touchdown_from_phase &&
+                          foot_world.z() - point.position.z() > config_.early_touchdown_above_path_m &&
+                          ground_force_on_foot_world(state, leg).z() > config_.early_touchdown_force_n;
+    touching_ticks_[leg] = touching ? touching_ticks_[leg] + 1 : 0;
+    if (touching_ticks_[leg] >= config_.early_touchdown_ticks) {
+      touched_early_[leg] = true;
+      early_touchdown_world_[leg] = foot_world;
+    }
+  }
+  if (touched_early_[leg]) {
+    // stays on what it met until its stance begins
+    point.position = early_touchdown_world_[leg];
+    point.velocity.setZero();
+  }
+  track_foot_point(leg, point, state, command);
+}
 
+void LocomotionController::track_foot_point(std::size_t leg, const SwingPoint& point, const RobotState& state,
+                                            JointCommand& command) const {
   // in flight the legs follow their targets in the attitude of the takeoff: tracking world targets
   // from a rolling body would swing the legs against the roll and spin the body further
   const Eigen::Matrix3d world_to_body = swing_frame_.transpose();
@@ -307,6 +335,25 @@ void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& ph
     command.kd[i] = config_.swing_kd;
     command.tau_ff[i] = 0.0;
   }
+}
+
+bool LocomotionController::ground_pushes_back(std::size_t leg, const RobotState& state) const {
+  return ground_force_on_foot_world(state, leg).z() > config_.early_touchdown_force_n;
+}
+
+void LocomotionController::command_reaching_leg(std::size_t leg, const RobotState& state, JointCommand& command) {
+  reach_elapsed_s_[leg] += config_.tick_s;
+  touching_ticks_[leg] = ground_pushes_back(leg, state) ? touching_ticks_[leg] + 1 : 0;
+  const double depth = config_.late_touchdown_reach_speed_m_s * reach_elapsed_s_[leg];
+  if (touching_ticks_[leg] >= config_.late_touchdown_ticks || depth > config_.late_touchdown_reach_m) {
+    // on the ground (or as deep as a blind foot looks): the stance takes it from the next tick
+    reaching_[leg] = false;
+    touching_ticks_[leg] = 0;
+  }
+  SwingPoint point;
+  point.position = reach_from_world_[leg] - Eigen::Vector3d(0.0, 0.0, std::min(depth, config_.late_touchdown_reach_m));
+  point.velocity = Eigen::Vector3d(0.0, 0.0, -config_.late_touchdown_reach_speed_m_s);
+  track_foot_point(leg, point, state, command);
 }
 
 void LocomotionController::change_pattern_if_due(const RobotState& state) {
@@ -449,10 +496,27 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
   in_flight_ = flight;
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
     const LegPhase& phase = phases[leg];
-    if (phase.stance) {
+    if (phase.stance && !was_stance_[leg] && config_.late_touchdown_reach_m > 0.0 &&
+        phase.stance_duration_s >= config_.late_touchdown_min_stance_s && !touched_early_[leg] &&
+        !ground_pushes_back(leg, state)) {
+      // its stance is due and nothing holds the foot up yet (the ground lies lower than planned,
+      // off a step): it reaches on down, out of the MPC's stance feet, until it finds the ground
+      reaching_[leg] = true;
+      reach_elapsed_s_[leg] = 0.0;
+      touching_ticks_[leg] = 0;
+      reach_from_world_[leg] = state.position_world + body_to_world * state.foot_position_body[leg];
+    }
+    if (!phase.stance) reaching_[leg] = false;
+    if (reaching_[leg]) {
+      command_reaching_leg(leg, state, command);
+    } else if (phase.stance) {
       command_stance_leg(leg, state, command);
     } else {
-      if (was_stance_[leg]) swing_start_[leg] = state.position_world + body_to_world * state.foot_position_body[leg];
+      if (was_stance_[leg]) {
+        swing_start_[leg] = state.position_world + body_to_world * state.foot_position_body[leg];
+        touched_early_[leg] = false;
+        touching_ticks_[leg] = 0;
+      }
       command_swing_leg(leg, phase, state, command);
     }
     was_stance_[leg] = phase.stance;

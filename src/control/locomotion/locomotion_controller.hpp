@@ -12,6 +12,7 @@
 #include "control/locomotion/convex_mpc.hpp"
 #include "control/locomotion/foothold.hpp"
 #include "control/locomotion/gait.hpp"
+#include "control/locomotion/swing_trajectory.hpp"
 #include "control/locomotion/mpc_worker.hpp"
 #include "core/contact_plan.hpp"
 #include "core/robot_model.hpp"
@@ -53,6 +54,36 @@ struct LocomotionConfig {
   double velocity_trim_gain_per_s = 0.0;
   double velocity_trim_max_fraction = 0.25;
   double velocity_trim_error_window_m_s = 0.5;
+  // a swing foot that meets the ground before its planned touchdown (the top of a step or a stair,
+  // where the blind MC plans flat ground) is held where it met it, instead of being driven on down
+  // to the planned height: the ground's upward force on it (from its joint torques) above this in
+  // the swing's second half (N). 0: off, the product's tuning; config/extended.yaml turns it on
+  double early_touchdown_force_n = 0.0;
+  // ... from this share of the swing on: before it the swing's turn at its apex reads as up to
+  // 240 N on a foot in the air (a 12 cm swing of the slow trot on flat ground), after 0.6 under 20 N
+  double early_touchdown_from_phase = 0.6;
+  // ... while the foot stands this far above its planned path (m): in the air it trails the path
+  // by 0 to 3 cm below and is never more than 3 mm above it (flat ground, the same swing) ...
+  double early_touchdown_above_path_m = 0.01;
+  // ... for this many ticks in a row: a swing target that jumps (the ground plane turning as
+  // another foot lands) reads as +-300 N for two or three ticks
+  int early_touchdown_ticks = 5;
+  // a foot whose stance is due while nothing holds it up yet (the ground lower than planned: off a
+  // step) reaches on down at this speed, out of the MPC's stance feet, until the ground pushes
+  // back (early_touchdown_force_n, late_touchdown_ticks in a row) or it is this far below where its
+  // stance was due (m). 0: off, the product's tuning (the stance's forces drive it down instead)
+  double late_touchdown_reach_m = 0.0;
+  double late_touchdown_reach_speed_m_s = 1.0;
+  int late_touchdown_ticks = 2;
+  // ... only in stances at least this long (s): a foot that reaches is out of the MPC's plan for a
+  // whole 30 ms segment, which the slow trot's 0.36 s stance spares and the flying trot's 0.12 s
+  // does not (with reaching on, it made 0.74 m/s of a commanded 2.5)
+  double late_touchdown_min_stance_s = 0.3;
+  // a swing aims at the ground its foot lifted from, tilted by the ground plane between there and
+  // the foothold, instead of at the plane itself: the plane through four feet of which one or two
+  // stand on a step lies between the step and the floor, and a rear foot aiming at it stopped in
+  // the air above the floor
+  bool foothold_on_own_ground = false;
   // a new gait starts once the ramped velocity is this close to its limits (m/s, rad/s)
   double gait_switch_velocity_margin = 0.05;
   // ... and once the body's measured velocity is this close to them (m/s)
@@ -171,6 +202,12 @@ class LocomotionController {
   // where a swinging foot (its centre) will land
   Eigen::Vector3d foothold_world(std::size_t leg, const LegPhase& phase, const RobotState& state) const;
   void command_swing_leg(std::size_t leg, const LegPhase& phase, const RobotState& state, JointCommand& command);
+  // the leg's joints track a foot point (world) with the swing gains
+  void track_foot_point(std::size_t leg, const SwingPoint& point, const RobotState& state, JointCommand& command) const;
+  // a foot reaching down for ground that lies lower than planned (late_touchdown_reach_m)
+  void command_reaching_leg(std::size_t leg, const RobotState& state, JointCommand& command);
+  // the ground's upward force on the foot is above early_touchdown_force_n
+  bool ground_pushes_back(std::size_t leg, const RobotState& state) const;
   void command_stance_leg(std::size_t leg, const RobotState& state, JointCommand& command);
   Eigen::Vector3d hip_on_ground_world(std::size_t leg, const RobotState& state, double ahead_s,
                                       double yaw_ahead_s) const;
@@ -195,6 +232,14 @@ class LocomotionController {
   int tick_in_segment_ = 0;
   std::array<bool, kNumLegs> was_stance_{};
   std::array<Eigen::Vector3d, kNumLegs> swing_start_{};
+  // per leg: its swing met the ground early (early_touchdown_force_n), and where (world)
+  std::array<bool, kNumLegs> touched_early_{};
+  std::array<int, kNumLegs> touching_ticks_{};  // ticks in a row that looked like a touchdown
+  // per leg: its stance is due but it still reaches down for the ground (late_touchdown_reach_m)
+  std::array<bool, kNumLegs> reaching_{};
+  std::array<double, kNumLegs> reach_elapsed_s_{};
+  std::array<Eigen::Vector3d, kNumLegs> reach_from_world_{};
+  std::array<Eigen::Vector3d, kNumLegs> early_touchdown_world_{};
   // body to world rotation the swing legs use: the measured one, frozen while all feet are in the air
   Eigen::Matrix3d swing_frame_ = Eigen::Matrix3d::Identity();
   bool in_flight_ = false;
