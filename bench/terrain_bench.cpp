@@ -11,6 +11,7 @@
 //                                       one case (exit 0 when every seed crossed); --config: the
 //                                       MC's configuration (config/extended.yaml: beyond the product)
 #include <cmath>
+#include <filesystem>
 #include <cstdio>
 #include <cstdlib>
 #include <random>
@@ -113,8 +114,11 @@ int run_case(const Options& options) {
                 r.worst_tilt_rad * 180.0 / M_PI);
     std::fflush(stdout);
   }
-  std::printf("| %s | gait %d, %.2f m/s, to x = %.0f m | %d / %d crossed | %d fell |\n", options.terrain.c_str(),
-              options.gait_id, options.speed_m_s, options.to_x_m, crossed, runs, fell);
+  const std::string extras =
+      (options.step_height_m >= 0.0 ? ", swing " + std::to_string(static_cast<int>(std::lround(options.step_height_m * 100))) + " cm" : "") +
+      (options.config_path.empty() ? "" : ", " + std::filesystem::path(options.config_path).filename().string());
+  std::printf("| %s | gait %d, %.2f m/s, to x = %.0f m%s | %d / %d crossed | %d fell |\n", options.terrain.c_str(),
+              options.gait_id, options.speed_m_s, options.to_x_m, extras.c_str(), crossed, runs, fell);
   std::fflush(stdout);
   return crossed;
 }
@@ -124,10 +128,14 @@ struct TableRow {
   const char* terrain;
   double speed_m_s;
   double to_x_m;
+  bool extended = false;        // config/extended.yaml (the MC beyond the product) instead of the defaults
+  double step_height_m = -1.0;  // < 0: the gait's own
 };
 constexpr TableRow kTable[] = {
-    {"slope:10", 0.4, 10.0}, {"slope:20", 0.4, 10.0},       {"step:0.04", 0.3, 4.0},
-    {"step:0.08", 0.3, 4.0}, {"stairs:0.1:0.28", 0.3, 6.0}, {"rough:0.03", 0.5, 21.0},
+    {"slope:10", 0.4, 10.0},          {"slope:20", 0.4, 10.0},   {"step:0.04", 0.3, 4.0},
+    {"step:0.08", 0.3, 4.0},          {"step:0.08", 0.3, 4.0, true, 0.10},
+    {"stairs:0.1:0.28", 0.3, 6.0},    {"stairs:0.1:0.28", 0.3, 6.0, true, 0.10},
+    {"rough:0.03", 0.5, 21.0},
 };
 // no tuning decision looked at these seeds (tuning and exploration: 1-10)
 constexpr int kFreshFirstSeed = 101;
@@ -183,6 +191,8 @@ int main(int argc, char** argv) {
     table_options.terrain = row.terrain;
     table_options.speed_m_s = row.speed_m_s;
     table_options.to_x_m = row.to_x_m;
+    table_options.config_path = row.extended ? std::string(CEREBELLUM_CONFIG_DIR) + "/extended.yaml" : "";
+    table_options.step_height_m = row.step_height_m;
     // half as long again as the walk takes at the commanded speed, and the start
     table_options.seconds = 1.5 * row.to_x_m / row.speed_m_s + 5.0;
     table_options.first_seed = kFreshFirstSeed;
