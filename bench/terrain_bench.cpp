@@ -9,7 +9,8 @@
 //   terrain_bench --terrain=slope:20 --speed=0.4 [--gait=27] [--seeds=1-10] [--step_height=0.08]
 //                 [--to_x=10] [--seconds=40] [--trace] [--config=FILE]
 //                                       one case (exit 0 when every seed crossed); --config: the
-//                                       MC's configuration (config/extended.yaml: beyond the product)
+//                                       MC's configuration (config/extended-terrain.yaml: beyond the
+//                                       product, for steps)
 #include <cmath>
 #include <filesystem>
 #include <cstdio>
@@ -128,7 +129,7 @@ struct TableRow {
   const char* terrain;
   double speed_m_s;
   double to_x_m;
-  bool extended = false;        // config/extended.yaml (the MC beyond the product) instead of the defaults
+  bool extended = false;        // config/extended-terrain.yaml (beyond the product) instead of the defaults
   double step_height_m = -1.0;  // < 0: the gait's own
 };
 constexpr TableRow kTable[] = {
@@ -191,7 +192,7 @@ int main(int argc, char** argv) {
     table_options.terrain = row.terrain;
     table_options.speed_m_s = row.speed_m_s;
     table_options.to_x_m = row.to_x_m;
-    table_options.config_path = row.extended ? std::string(CEREBELLUM_CONFIG_DIR) + "/extended.yaml" : "";
+    table_options.config_path = row.extended ? std::string(CEREBELLUM_CONFIG_DIR) + "/extended-terrain.yaml" : "";
     table_options.step_height_m = row.step_height_m;
     // half as long again as the walk takes at the commanded speed, and the start
     table_options.seconds = 1.5 * row.to_x_m / row.speed_m_s + 5.0;

@@ -111,6 +111,17 @@ TEST(McConfig, TheShippedExtendedFileLoadsAndGoesPastTheProductOnlyWhereItSays) 
             find_gait(kFlyingTrotGaitId)->velocity_max[0]);
   EXPECT_GT(config.locomotion.velocity_trim_gain_per_s, 0.0);
   EXPECT_NE(config.robot.model_path.find("cyberdog2.xml"), std::string::npos);
+  EXPECT_DOUBLE_EQ(config.locomotion.early_touchdown_force_n, 0.0) << "the step reflexes cost falls on flat ground";
+}
+
+TEST(McConfig, TheShippedExtendedTerrainFileTurnsOnTheStepReflexesTheHigherSwingAndTheTrimButNoFasterClamp) {
+  const McConfig config = load_config(std::string(CEREBELLUM_SOURCE_DIR) + "/config/extended-terrain.yaml");
+  EXPECT_GT(config.locomotion_limits.step_height().upper, kStepHeightRange.upper);
+  EXPECT_GT(config.locomotion.early_touchdown_force_n, 0.0);
+  EXPECT_GT(config.locomotion.late_touchdown_reach_m, 0.0);
+  EXPECT_TRUE(config.locomotion.foothold_on_own_ground);
+  EXPECT_DOUBLE_EQ(config.locomotion_limits.velocity(kFlyingTrotGaitId)->max.x(),
+                   find_gait(kFlyingTrotGaitId)->velocity_max[0]);
 }
 
 TEST(McConfig, UnknownKeyIsNamedWithTheAcceptedKeys) {

@@ -22,8 +22,10 @@ struct Crossing {
   double highest_ground_m = 0.0;  // the terrain under the trunk, as sim_truth reports it
 };
 
-// the MC beyond the product, as shipped (config/extended.yaml)
-McConfig extended_config() { return load_config(std::string(CEREBELLUM_SOURCE_DIR) + "/config/extended.yaml"); }
+// the MC beyond the product for steps, as shipped (config/extended-terrain.yaml)
+McConfig extended_terrain_config() {
+  return load_config(std::string(CEREBELLUM_SOURCE_DIR) + "/config/extended-terrain.yaml");
+}
 
 // step_height_m < 0: the gait's own
 Crossing walk_across(const std::string& terrain, double speed_m_s, double to_x_m, double seconds, unsigned seed,
@@ -66,8 +68,8 @@ TEST(McTerrainWalk, TheSlowTrotStepsUpAndDownAFourCentimetreStep) {
 
 // blind: the swing meets the step's top early (held there), aims at the ground it lifted from, and
 // reaches down off the far edge (LocomotionConfig's early and late touchdown)
-TEST(McTerrainWalk, TheExtendedConfigurationStepsUpAndDownAnEightCentimetreStepWithATenCentimetreSwing) {
-  const Crossing c = walk_across("step:0.08", 0.3, 4.0, 20.0, 7, extended_config(), 0.10);
+TEST(McTerrainWalk, TheExtendedTerrainConfigurationStepsUpAndDownAnEightCentimetreStepWithATenCentimetreSwing) {
+  const Crossing c = walk_across("step:0.08", 0.3, 4.0, 20.0, 7, extended_terrain_config(), 0.10);
   EXPECT_TRUE(c.stayed_upright);
   EXPECT_TRUE(c.crossed) << "after " << c.time_s << " s";
   EXPECT_DOUBLE_EQ(c.highest_ground_m, 0.08);
