@@ -1,5 +1,6 @@
 // The configuration's `locomotion_limits:` section: mode 11's velocity clamps per stepping gait and
-// its swing-height clamp, beyond the product's (config/extended.yaml). Absent, the product's stay.
+// its swing-height clamp, beyond the product's (config/extended.yaml, config/extended-terrain.yaml).
+// Absent, the product's stay.
 #pragma once
 
 #include <yaml-cpp/yaml.h>

@@ -64,10 +64,11 @@ struct McConfig {
   std::string back_flip_path;
   std::string front_flip_path;
   // mode 11's clamps (section locomotion_limits:): the product's by default; config/extended.yaml
-  // goes beyond them (docs/locomotion.md, "Beyond the product")
+  // and config/extended-terrain.yaml go beyond them (docs/locomotion.md, "Beyond the product")
   LocomotionLimits locomotion_limits;
-  // the walking controller's settings (section locomotion: sets those beyond the product's tuning,
-  // velocity_trim_gain_per_s and early_touchdown_force_n; its tick follows loop_period_s)
+  // the walking controller's settings (section locomotion: sets those the product's tuning leaves
+  // off: velocity_trim_gain_per_s, early_touchdown_force_n, foothold_on_own_ground,
+  // late_touchdown_reach_m; its tick follows loop_period_s)
   LocomotionConfig locomotion;
   SimTruthConfig sim_truth;              // simulation only
   SimControlConfig sim_command;          // simulation only

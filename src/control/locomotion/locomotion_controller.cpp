@@ -22,6 +22,11 @@ double approach(double current, double target, double max_step) {
 
 Eigen::Matrix3d yaw_rotation(double yaw) { return Eigen::AngleAxisd(yaw, Eigen::Vector3d::UnitZ()).toRotationMatrix(); }
 
+// where a foot's centre is in the world, on the estimate
+Eigen::Vector3d foot_in_world(const RobotState& state, const Eigen::Matrix3d& body_to_world, std::size_t leg) {
+  return state.position_world + body_to_world * state.foot_position_body[leg];
+}
+
 }  // namespace
 
 LocomotionController::LocomotionController(const LocomotionConfig& config, std::unique_ptr<qp::QpSolver> solver)
@@ -293,10 +298,10 @@ void LocomotionController::command_swing_leg(std::size_t leg, const LegPhase& ph
   SwingPoint point =
       swing_point(swing_start_[leg], foothold, height, phase.swing_phase, std::max(phase.swing_duration_s, 1e-3));
   if (!touched_early_[leg] && config_.early_touchdown_force_n > 0.0) {
-    const Eigen::Vector3d foot_world = state.position_world + state.orientation * state.foot_position_body[leg];
+    const Eigen::Vector3d foot_world = foot_in_world(state, state.orientation.toRotationMatrix(), leg);
     const bool touching = phase.swing_phase > config_.early_touchdown_from_phase &&
                           foot_world.z() - point.position.z() > config_.early_touchdown_above_path_m &&
-                          ground_force_on_foot_world(state, leg).z() > config_.early_touchdown_force_n;
+                          ground_pushes_back(leg, state);
     touching_ticks_[leg] = touching ? touching_ticks_[leg] + 1 : 0;
     if (touching_ticks_[leg] >= config_.early_touchdown_ticks) {
       touched_early_[leg] = true;
@@ -442,7 +447,7 @@ void LocomotionController::change_pattern_if_due(const RobotState& state) {
   // feet already in the air start their new swing from where they are
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    if (!was_stance_[leg]) swing_start_[leg] = state.position_world + body_to_world * state.foot_position_body[leg];
+    if (!was_stance_[leg]) swing_start_[leg] = foot_in_world(state, body_to_world, leg);
   }
 }
 
@@ -454,7 +459,7 @@ void LocomotionController::play(std::shared_ptr<const ContactSequence> sequence,
   // a foot in the air (none from a stand) swings on from where it is
   const Eigen::Matrix3d body_to_world = state.orientation.toRotationMatrix();
   for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
-    swing_start_[leg] = state.position_world + body_to_world * state.foot_position_body[leg];
+    swing_start_[leg] = foot_in_world(state, body_to_world, leg);
   }
 }
 
@@ -504,7 +509,7 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
       reaching_[leg] = true;
       reach_elapsed_s_[leg] = 0.0;
       touching_ticks_[leg] = 0;
-      reach_from_world_[leg] = state.position_world + body_to_world * state.foot_position_body[leg];
+      reach_from_world_[leg] = foot_in_world(state, body_to_world, leg);
     }
     if (!phase.stance) reaching_[leg] = false;
     if (reaching_[leg]) {
@@ -513,7 +518,7 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
       command_stance_leg(leg, state, command);
     } else {
       if (was_stance_[leg]) {
-        swing_start_[leg] = state.position_world + body_to_world * state.foot_position_body[leg];
+        swing_start_[leg] = foot_in_world(state, body_to_world, leg);
         touched_early_[leg] = false;
         touching_ticks_[leg] = 0;
       }

@@ -57,7 +57,8 @@ struct LocomotionConfig {
   // a swing foot that meets the ground before its planned touchdown (the top of a step or a stair,
   // where the blind MC plans flat ground) is held where it met it, instead of being driven on down
   // to the planned height: the ground's upward force on it (from its joint torques) above this in
-  // the swing's second half (N). 0: off, the product's tuning; config/extended.yaml turns it on
+  // the swing's second half (N). 0: off, the product's tuning; config/extended-terrain.yaml turns it
+  // on (it costs falls on flat ground: docs/terrain.md)
   double early_touchdown_force_n = 0.0;
   // ... from this share of the swing on: before it the swing's turn at its apex reads as up to
   // 240 N on a foot in the air (a 12 cm swing of the slow trot on flat ground), after 0.6 under 20 N
