@@ -5,7 +5,7 @@
 
 #include <optimization.h>
 
-#include "control/qp/cholesky_upper.hpp"
+#include "control/qp/cholesky_lower.hpp"
 
 namespace cerebellum::qp {
 
@@ -64,7 +64,7 @@ QpStatus AlglibQpSolver::run(const QpProblem& problem, QpSolution& solution) {
   Workspace& ws = *workspace_;
   if (ws.cholesky.rows() < n) ws.cholesky.setZero(n, n);
   if (ws.scratch.size() < n) ws.scratch.setZero(n);
-  if (!cholesky_upper(problem.hessian, settings_.min_pivot_ratio, ws.cholesky.topLeftCorner(n, n))) {
+  if (!cholesky_lower(problem.hessian, settings_.min_pivot_ratio, ws.cholesky.topLeftCorner(n, n))) {
     return QpStatus::NotConvex;
   }
 

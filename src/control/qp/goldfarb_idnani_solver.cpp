@@ -7,7 +7,7 @@
 
 #include <Eigen/Jacobi>
 
-#include "control/qp/cholesky_upper.hpp"
+#include "control/qp/cholesky_lower.hpp"
 
 namespace cerebellum::qp {
 namespace {
@@ -29,9 +29,10 @@ void GoldfarbIdnaniSolver::reserve(const QpDimensions& max_dims) {
   const Eigen::Index m_in = std::max(max_dims.inequalities, capacity_.inequalities);
   if (n > capacity_.variables) {
     cholesky_.setZero(n, n);
-    basis_.setZero(n, n);
+    ortho_.setZero(n, n);
     triangle_.setZero(n, n);
-    for (Eigen::VectorXd* v : {&x_, &normal_, &projected_, &primal_dir_, &dual_dir_, &multipliers_}) {
+    for (Eigen::VectorXd* v : {&x_, &normal_, &transformed_, &projected_, &correction_, &residual_, &primal_dir_,
+                               &dual_dir_, &multipliers_}) {
       v->setZero(n);
     }
     active_.resize(to_size(n));
@@ -40,6 +41,12 @@ void GoldfarbIdnaniSolver::reserve(const QpDimensions& max_dims) {
     row_values_.setZero(m_in);
     row_scale_.setZero(m_in);
     side_is_active_.resize(to_size(2 * m_in));
+    row_fill_.resize(to_size(m_in));
+  }
+  if (row_start_.size() < to_size(m_in + 1)) row_start_.resize(to_size(m_in + 1));
+  if (n * m_in > static_cast<Eigen::Index>(row_column_.size())) {
+    row_column_.resize(to_size(n * m_in));
+    row_value_.resize(to_size(n * m_in));
   }
   capacity_ = {n, std::max(max_dims.equalities, capacity_.equalities), m_in};
 }
@@ -63,22 +70,22 @@ QpStatus GoldfarbIdnaniSolver::run(const QpProblem& problem, QpSolution& solutio
   q_ = 0;
   if (has_crossed_bounds(problem)) return QpStatus::Infeasible;
 
-  // H = U' U, J = U^-1 = L^-T with no constraint active
-  if (!cholesky_upper(problem.hessian, settings_.min_pivot_ratio, cholesky_.topLeftCorner(n_, n_))) {
-    return QpStatus::NotConvex;
-  }
-  auto basis = basis_.topLeftCorner(n_, n_);
-  invert_upper_triangular(cholesky_.topLeftCorner(n_, n_), basis);
-
-  // unconstrained minimum x = -H^-1 g = -J J' g
-  projected_.head(n_).noalias() = basis.transpose() * problem.linear;
-  x_.head(n_).noalias() = basis * projected_.head(n_);
-  x_.head(n_) *= -1.0;
+  // H = L L'
+  auto lower = cholesky_.topLeftCorner(n_, n_);
+  if (!cholesky_lower(problem.hessian, settings_.min_pivot_ratio, lower)) return QpStatus::NotConvex;
+  // unconstrained minimum x = -H^-1 g = -L^-T L^-1 g, by two triangular solves
+  x_.head(n_) = -problem.linear;
+  lower.triangularView<Eigen::Lower>().solveInPlace(x_.head(n_));
+  lower.triangularView<Eigen::Lower>().transpose().solveInPlace(x_.head(n_));
 
   // inequality rows are compared by distance, so scale each by 1 / ||C_i||
   const Eigen::Index m_in = dims.inequalities;
+  rows_indexed_ = false;
+  // column by column: C is column-major
+  row_scale_.head(m_in).setZero();
+  for (Eigen::Index j = 0; j < n_; ++j) row_scale_.head(m_in) += problem.ineq_matrix.col(j).cwiseAbs2();
   for (Eigen::Index i = 0; i < m_in; ++i) {
-    const double norm = problem.ineq_matrix.row(i).norm();
+    const double norm = std::sqrt(row_scale_(i));
     row_scale_(i) = norm > 0.0 ? 1.0 / norm : 1.0;
   }
   std::fill_n(side_is_active_.begin(), to_size(2 * m_in), char{0});
@@ -90,13 +97,14 @@ QpStatus GoldfarbIdnaniSolver::run(const QpProblem& problem, QpSolution& solutio
   while (true) {
     const Eigen::Index id = most_violated_bound(problem);
     if (id < 0) return QpStatus::Solved;
+    index_inequality_rows(problem);
     double new_multiplier = 0.0;
     // move until bound `id` is met (full step), dropping active bounds that block (partial step)
     while (true) {
       if (solution.iterations >= limit) return QpStatus::MaxIterations;
       ++solution.iterations;
       const double bound = load_constraint(problem, id);
-      const double slack = normal_.head(n_).dot(x_.head(n_)) - bound;
+      const double slack = normal_dot_x() - bound;
       compute_directions();
       const StepLengths steps = step_lengths(slack);
       if (!steps.has_primal && steps.blocking < 0) return QpStatus::Infeasible;
@@ -116,10 +124,10 @@ QpStatus GoldfarbIdnaniSolver::add_equalities(const QpProblem& problem, QpSoluti
   for (Eigen::Index k = 0; k < m_eq_; ++k) {
     ++solution.iterations;
     const double bound = load_constraint(problem, k);
-    const double slack = normal_.head(n_).dot(x_.head(n_)) - bound;
+    const double slack = normal_dot_x() - bound;
     compute_directions();
-    const double free_sq = projected_.segment(q_, n_ - q_).squaredNorm();
-    if (!(free_sq > tol_sq * projected_.head(n_).squaredNorm())) {
+    const double free_sq = free_sq_;
+    if (!(free_sq > tol_sq * total_sq_)) {
       // a combination of earlier equalities: redundant if it already holds, else contradictory
       const double norm = normal_.head(n_).norm();
       if (std::abs(slack) <= settings_.feasibility_tolerance * std::max(norm, 1.0)) continue;
@@ -135,7 +143,18 @@ QpStatus GoldfarbIdnaniSolver::add_equalities(const QpProblem& problem, QpSoluti
 Eigen::Index GoldfarbIdnaniSolver::most_violated_bound(const QpProblem& problem) {
   const Eigen::Index m_in = problem.ineq_matrix.rows();
   if (m_in == 0) return -1;
-  row_values_.head(m_in).noalias() = problem.ineq_matrix * x_.head(n_);
+  if (rows_indexed_) {
+    for (Eigen::Index i = 0; i < m_in; ++i) {
+      double value = 0.0;
+      for (Eigen::Index k = row_start_[to_size(i)]; k < row_start_[to_size(i + 1)]; ++k) {
+        value += row_value_[to_size(k)] * x_(row_column_[to_size(k)]);
+      }
+      row_values_(i) = value;
+    }
+  } else {
+    // the first check of a solve: indexing the rows costs more than one dense product
+    row_values_.head(m_in).noalias() = problem.ineq_matrix * x_.head(n_);
+  }
   double worst = -settings_.feasibility_tolerance;
   Eigen::Index worst_id = -1;
   for (Eigen::Index i = 0; i < m_in; ++i) {
@@ -153,32 +172,97 @@ Eigen::Index GoldfarbIdnaniSolver::most_violated_bound(const QpProblem& problem)
   return worst_id;
 }
 
+void GoldfarbIdnaniSolver::index_inequality_rows(const QpProblem& problem) {
+  // column by column (C is column-major): count each row's nonzeros, then place them
+  if (rows_indexed_) return;
+  rows_indexed_ = true;
+  const Eigen::MatrixXd& c = problem.ineq_matrix;
+  const Eigen::Index m_in = c.rows();
+  std::fill_n(row_start_.begin(), to_size(m_in + 1), Eigen::Index{0});
+  for (Eigen::Index j = 0; j < n_; ++j) {
+    for (Eigen::Index i = 0; i < m_in; ++i) {
+      if (c(i, j) != 0.0) ++row_start_[to_size(i + 1)];
+    }
+  }
+  for (Eigen::Index i = 0; i < m_in; ++i) {
+    row_start_[to_size(i + 1)] += row_start_[to_size(i)];
+    row_fill_[to_size(i)] = row_start_[to_size(i)];
+  }
+  for (Eigen::Index j = 0; j < n_; ++j) {
+    for (Eigen::Index i = 0; i < m_in; ++i) {
+      if (c(i, j) == 0.0) continue;
+      const std::size_t slot = to_size(row_fill_[to_size(i)]++);
+      row_column_[slot] = j;
+      row_value_[slot] = c(i, j);
+    }
+  }
+}
+
 double GoldfarbIdnaniSolver::load_constraint(const QpProblem& problem, Eigen::Index id) {
   // every constraint is written as n' x >= b (equalities as n' x = b)
   if (id < m_eq_) {
+    normal_row_ = -1;
     normal_.head(n_) = problem.eq_matrix.row(id).transpose();
     return problem.eq_rhs(id);
   }
-  const Eigen::Index row = (id - m_eq_) / 2;
+  normal_row_ = (id - m_eq_) / 2;
   if ((id - m_eq_) % 2 == 0) {
-    normal_.head(n_) = problem.ineq_matrix.row(row).transpose();
-    return problem.ineq_lower(row);
+    normal_sign_ = 1.0;
+    return problem.ineq_lower(normal_row_);
   }
-  normal_.head(n_) = -problem.ineq_matrix.row(row).transpose();
-  return -problem.ineq_upper(row);
+  normal_sign_ = -1.0;
+  return -problem.ineq_upper(normal_row_);
+}
+
+double GoldfarbIdnaniSolver::normal_dot_x() const {
+  if (normal_row_ < 0) return normal_.head(n_).dot(x_.head(n_));
+  double value = 0.0;
+  for (Eigen::Index k = row_start_[to_size(normal_row_)]; k < row_start_[to_size(normal_row_ + 1)]; ++k) {
+    value += row_value_[to_size(k)] * x_(row_column_[to_size(k)]);
+  }
+  return normal_sign_ * value;
 }
 
 void GoldfarbIdnaniSolver::compute_directions() {
-  const auto basis = basis_.topLeftCorner(n_, n_);
-  const Eigen::Index free = n_ - q_;
-  // d = J' n_p; primal direction z = J2 d2; dual direction r = R^-1 d1
-  projected_.head(n_).noalias() = basis.transpose() * normal_.head(n_);
-  if (free > 0) {
-    primal_dir_.head(n_).noalias() = basis.rightCols(free) * projected_.segment(q_, free);
+  const auto lower = cholesky_.topLeftCorner(n_, n_);
+  // w = L^-1 n_p. L is lower triangular, so w is zero above the normal's first nonzero and the
+  // solve starts there
+  auto w = transformed_.head(n_);
+  Eigen::Index first = 0;
+  if (normal_row_ < 0) {
+    w = normal_.head(n_);
   } else {
-    primal_dir_.head(n_).setZero();
+    w.setZero();
+    first = n_;
+    for (Eigen::Index k = row_start_[to_size(normal_row_)]; k < row_start_[to_size(normal_row_ + 1)]; ++k) {
+      const Eigen::Index column = row_column_[to_size(k)];
+      w(column) = normal_sign_ * row_value_[to_size(k)];
+      first = std::min(first, column);
+    }
   }
-  dual_dir_.head(q_) = projected_.head(q_);
+  if (first < n_) {
+    const Eigen::Index tail = n_ - first;
+    lower.bottomRightCorner(tail, tail).triangularView<Eigen::Lower>().solveInPlace(w.tail(tail));
+  }
+  total_sq_ = w.squaredNorm();
+  // d1 = Q1' w and the rest r = w - Q1 d1, projected twice so r stays orthogonal to Q1
+  auto r = residual_.head(n_);
+  r = w;
+  auto d1 = projected_.head(q_);
+  if (q_ > 0) {
+    const auto q1 = ortho_.topLeftCorner(n_, q_);
+    d1.noalias() = q1.transpose() * r;
+    r.noalias() -= q1 * d1;
+    auto again = correction_.head(q_);
+    again.noalias() = q1.transpose() * r;
+    r.noalias() -= q1 * again;
+    d1 += again;
+  }
+  free_sq_ = r.squaredNorm();
+  // primal direction z = L^-T r; dual direction r = R^-1 d1
+  primal_dir_.head(n_) = r;
+  lower.triangularView<Eigen::Lower>().transpose().solveInPlace(primal_dir_.head(n_));
+  dual_dir_.head(q_) = d1;
   triangle_.topLeftCorner(q_, q_).triangularView<Eigen::Upper>().solveInPlace(dual_dir_.head(q_));
 }
 
@@ -195,9 +279,9 @@ GoldfarbIdnaniSolver::StepLengths GoldfarbIdnaniSolver::step_lengths(double slac
     }
   }
   // primal (full) step: z' n_p = |d2|^2, zero when n_p lies in the span of the active normals
-  const double free_sq = projected_.segment(q_, n_ - q_).squaredNorm();
+  const double free_sq = free_sq_;
   const double tol = settings_.dependence_tolerance;
-  steps.has_primal = free_sq > tol * tol * projected_.head(n_).squaredNorm();
+  steps.has_primal = free_sq > tol * tol * total_sq_;
   // never backwards: a bound that rounding already nudged to feasibility is added in place
   if (steps.has_primal) steps.primal = std::max(-slack / free_sq, 0.0);
   return steps;
@@ -210,16 +294,12 @@ void GoldfarbIdnaniSolver::take_step(double step, bool move_primal, double& new_
 }
 
 void GoldfarbIdnaniSolver::add_active(Eigen::Index id, double multiplier) {
-  auto basis = basis_.topLeftCorner(n_, n_);
-  // rotate d = J' n_p so only its first q + 1 entries remain; J follows the same rotations
-  Eigen::JacobiRotation<double> rotation;
-  for (Eigen::Index j = n_ - 1; j > q_; --j) {
-    if (projected_(j) == 0.0) continue;
-    rotation.makeGivens(projected_(j - 1), projected_(j), &projected_(j - 1));
-    projected_(j) = 0.0;
-    basis.applyOnTheRight(j - 1, j, rotation);
-  }
-  triangle_.col(q_).head(q_ + 1) = projected_.head(q_ + 1);
+  // the new normal's part outside the active span extends Q1; R gains the column [d1; |d2|].
+  // Callers add only normals with |d2| > 0 (step_lengths' has_primal, add_equalities' test)
+  const double free_norm = std::sqrt(free_sq_);
+  ortho_.col(q_).head(n_) = residual_.head(n_) / free_norm;
+  triangle_.col(q_).head(q_) = projected_.head(q_);
+  triangle_(q_, q_) = free_norm;
   active_[to_size(q_)] = id;
   multipliers_(q_) = multiplier;
   if (id >= m_eq_) side_is_active_[to_size(id - m_eq_)] = 1;
@@ -235,8 +315,8 @@ void GoldfarbIdnaniSolver::drop_active(Eigen::Index position) {
     multipliers_(j) = multipliers_(j + 1);
     triangle_.col(j).head(j + 2) = triangle_.col(j + 1).head(j + 2);
   }
-  // restore the triangle with rotations of neighbouring rows; J takes the same rotations
-  auto basis = basis_.topLeftCorner(n_, n_);
+  // restore the triangle with rotations of neighbouring rows; Q1 takes the same rotations
+  auto basis = ortho_.topLeftCorner(n_, q_);
   Eigen::JacobiRotation<double> rotation;
   for (Eigen::Index j = position; j + 1 < q_; ++j) {
     rotation.makeGivens(triangle_(j, j), triangle_(j + 1, j), &triangle_(j, j));
