@@ -53,10 +53,12 @@ BENCHMARK(BM_PhysicsStep)->Unit(benchmark::kMicrosecond);
 // the tick's wall time while the whole MC walks (gait 3 at 1 m/s, the MPC solving on its worker):
 // the loop hands the MPC its input at one tick and takes the solution at a later one, waiting
 // there if the solve is late (docs/architecture.md: that wait keeps lockstep runs deterministic).
-// p50, p99 and the longest tick of 5 s of robot time, the robot's own stand-up before it not counted
+// p50, p99 and the longest tick of 5 s of robot time, the robot's own stand-up before it not
+// counted, their mean and the real-time factor they add up to
 void BM_WalkingTickWallTime(benchmark::State& bench) {
   for (auto _ : bench) {
-    Mc mc = make_simulated_mc(default_config());
+    const McConfig config = default_config();
+    Mc mc = make_simulated_mc(config);
     LockstepClient client(mc);
     client.run(high_level_command(ModeId::RecoveryStand, 0), 3.0);
     std::vector<double> tick_us;
@@ -68,6 +70,12 @@ void BM_WalkingTickWallTime(benchmark::State& bench) {
       tick_us.push_back(std::chrono::duration<double, std::micro>(now - before).count());
       before = now;
     });
+    // robot seconds per wall second while walking: with taskset -c 1 the MPC's worker shares
+    // the loop's core, so this is the whole MC on one core
+    double walking_us = 0.0;
+    for (const double us : tick_us) walking_us += us;
+    bench.counters["rtf"] = static_cast<double>(tick_us.size()) * config.loop_period_s * 1e6 / walking_us;
+    bench.counters["mean_us"] = walking_us / static_cast<double>(tick_us.size());
     std::sort(tick_us.begin(), tick_us.end());
     bench.counters["p50_us"] = tick_us[tick_us.size() / 2];
     bench.counters["p99_us"] = tick_us[tick_us.size() * 99 / 100];

@@ -256,6 +256,62 @@ TEST(ConvexMpc, QpCostMatchesAStepByStepRolloutWithLeverArmsFollowingTheCom) {
   EXPECT_GT(std::abs(rollout_cost(u1) - rollout_cost(u2) - expected), 1e-3 * std::abs(expected));
 }
 
+TEST(ConvexMpc, QpMatchesARolloutWhenSwingFeetLeaveStepsWithFewerForcesOrNone) {
+  // the Hessian is built block by block over the steps' kept forces: a trot with a flight step
+  // (no force at all) and a step on three feet must still give the rollout's cost
+  auto mpc = make_mpc();
+  MpcInput in = standing_input(0.8, true);
+  in.x0[9] = 0.7;
+  in.x0[2] = -0.3;
+  in.contact[4] = {false, false, false, false};
+  in.contact[7] = {true, true, false, true};
+  for (int k = 0; k < kMpcHorizon; ++k) in.com_shift[k] = Eigen::Vector3d(0.7 * 0.03 * k, 0.0, 0.0);
+  mpc->build(in);
+  const qp::QpProblem& p = mpc->problem();
+  // both triangles are filled, and alike
+  EXPECT_EQ(p.hessian, p.hessian.transpose());
+  const Eigen::MatrixXd& h = p.hessian;
+  auto qp_cost = [&](const Eigen::VectorXd& u) { return 0.5 * u.dot(h * u) + p.linear.dot(u); };
+  const ConvexMpcConfig config;
+  // independent: spread the kept forces over all feet (swing feet push nothing) and roll out
+  auto rollout_cost = [&](const Eigen::VectorXd& kept) {
+    StateVector x = in.x0;
+    double cost = 0.0;
+    Eigen::Index next = 0;
+    for (int k = 0; k < kMpcHorizon; ++k) {
+      Eigen::Matrix<double, 12, 1> u = Eigen::Matrix<double, 12, 1>::Zero();
+      for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
+        if (!in.contact[k][leg]) continue;
+        u.segment<3>(3 * static_cast<Eigen::Index>(leg)) = kept.segment<3>(next);
+        next += 3;
+      }
+      std::array<Eigen::Vector3d, kNumLegs> lever = in.foot_from_com;
+      for (auto& r : lever) r -= in.com_shift[k];
+      Eigen::Matrix<double, kSrbStates, kSrbStates> a, ad;
+      Eigen::Matrix<double, kSrbStates, 12> b, bd;
+      ConvexMpc::continuous_dynamics(config, in.x0[2], lever, a, b);
+      ConvexMpc::discretize(a, b, config.dt_s, ad, bd);
+      x = ad * x + bd * u;
+      for (int s = 0; s < 12; ++s) cost += config.state_weights[s] * std::pow(x[s] - in.x_ref[k][s], 2);
+      cost += config.force_weight * u.squaredNorm();
+    }
+    EXPECT_EQ(next, kept.size());
+    return cost;
+  };
+  ASSERT_EQ(h.rows(), 3 * (2 * 8 + 3));  // eight steps on two feet, one on three, one on none
+  std::mt19937 rng(6);
+  std::uniform_real_distribution<double> force(-10.0, 30.0);
+  for (int trial = 0; trial < 3; ++trial) {
+    Eigen::VectorXd u1(h.rows()), u2(h.rows());
+    for (int i = 0; i < h.rows(); ++i) {
+      u1[i] = force(rng);
+      u2[i] = force(rng);
+    }
+    const double expected = rollout_cost(u1) - rollout_cost(u2);
+    EXPECT_NEAR(qp_cost(u1) - qp_cost(u2), expected, 1e-6 * std::abs(expected)) << trial;
+  }
+}
+
 TEST(ConvexMpc, NonFiniteInputIsRefusedWithoutSolving) {
   auto mpc = make_mpc();
   MpcInput in = standing_input();
