@@ -8,6 +8,7 @@
 #include <random>
 #include <vector>
 
+#include "../tests/control/locomotion/walking_fixture.hpp"
 #include "control/locomotion/convex_mpc.hpp"
 #include "control/qp/goldfarb_idnani_solver.hpp"
 #include "core/robot_model.hpp"
@@ -109,6 +110,64 @@ void BM_MpcSolveOnly(benchmark::State& bench) {
   bench.counters["iterations_p99"] = iterations[iterations.size() * 99 / 100];
 }
 BENCHMARK(BM_MpcSolveOnly)->Arg(1)->Arg(0)->ArgName("trot")->Unit(benchmark::kMillisecond)->Iterations(3);
+
+// a solver that keeps a copy of every problem it is given (called from the MPC's worker thread;
+// read only once the walk, and with it the worker, has ended)
+class RecordingSolver final : public qp::QpSolver {
+ public:
+  explicit RecordingSolver(std::vector<qp::QpProblem>& problems) : problems_(problems) {}
+  qp::QpStatus solve(const qp::QpProblem& problem, qp::QpSolution& solution) override {
+    problems_.push_back(problem);
+    return inner_.solve(problem, solution);
+  }
+  std::string_view name() const override { return "recording"; }
+
+ private:
+  std::vector<qp::QpProblem>& problems_;
+  qp::GoldfarbIdnaniSolver inner_;
+};
+
+// the MPC's problems of 5 s of walking with a gait at a forward speed, on the robot's estimate
+std::vector<qp::QpProblem> walking_problems(int gait, double vx_m_s) {
+  std::vector<qp::QpProblem> problems;
+  {
+    testing::WalkingSim sim(std::make_unique<RecordingSolver>(problems));
+    sim.controller.set(testing::walk_command(gait, vx_m_s));
+    sim.run_until(testing::StandThenWalk::kStandSeconds + 5.0);
+  }
+  return problems;
+}
+
+// the QP solve alone on a walk's own problems: gait 3 (trot) at 1 m/s, gait 10 (flying trot) at
+// 1.6 m/s; p50 / p99 of single solves, and the bounds added and dropped per solve
+void BM_MpcSolveWalking(benchmark::State& bench) {
+  const bool flying = bench.range(0) != 0;
+  const std::vector<qp::QpProblem> problems = walking_problems(flying ? 10 : 3, flying ? 1.6 : 1.0);
+  qp::GoldfarbIdnaniSolver solver;
+  qp::QpSolution solution;
+  std::vector<double> micros;
+  std::vector<int> iterations;
+  for (auto _ : bench) {
+    micros.clear();
+    iterations.clear();
+    for (const qp::QpProblem& p : problems) {
+      const auto start = std::chrono::steady_clock::now();
+      benchmark::DoNotOptimize(solver.solve(p, solution));
+      micros.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
+      iterations.push_back(solution.iterations);
+    }
+  }
+  report_percentiles(bench, micros);
+  std::sort(iterations.begin(), iterations.end());
+  bench.counters["problems"] = static_cast<double>(problems.size());
+  bench.counters["variables_max"] = 0;
+  for (const qp::QpProblem& p : problems) {
+    bench.counters["variables_max"] = std::max<double>(bench.counters["variables_max"], p.hessian.rows());
+  }
+  bench.counters["iterations_p50"] = iterations[iterations.size() / 2];
+  bench.counters["iterations_p99"] = iterations[iterations.size() * 99 / 100];
+}
+BENCHMARK(BM_MpcSolveWalking)->Arg(0)->Arg(1)->ArgName("flying_trot")->Unit(benchmark::kMillisecond)->Iterations(3);
 
 }  // namespace
 
