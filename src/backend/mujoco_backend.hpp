@@ -79,6 +79,8 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   const mjData_* data() const override { return data_; }
 
  private:
+  // mj_step1, or only its checks when reuse_forward and read()'s mj_forward left its stages
+  void begin_step(bool reuse_forward);
   void apply_motor_drivers();
   // after each physics step: coil temperatures, the battery's charge, what the drivers report
   void update_power_and_heat(double dt_s);
@@ -126,6 +128,9 @@ class MujocoBackend final : public RobotBackend, public Simulation {
   JointArray<double> applied_torque_{};
   JointArray<MotorDriverMode> driver_mode_ = all_motor_mode();  // of the last physics step
   bool sensors_stale_ = false;
+  // read()'s mj_forward computed the position and velocity stages of the present state, and
+  // nothing has changed the state or the model since: the next physics step need not repeat them
+  bool forward_is_current_ = false;
   std::vector<MotorThermalModel> thermal_;
   BatteryModel battery_;
   ThermalMass main_board_;
