@@ -79,16 +79,9 @@ void BM_MpcBuildOnly(benchmark::State& bench) {
 }
 BENCHMARK(BM_MpcBuildOnly)->Arg(1)->Arg(0)->ArgName("trot")->Unit(benchmark::kMillisecond)->Iterations(3);
 
-// the QP solve alone, on problems the MPC built
-void BM_MpcSolveOnly(benchmark::State& bench) {
-  const bool trot = bench.range(0) != 0;
-  ConvexMpc mpc(ConvexMpcConfig{}, std::make_unique<qp::GoldfarbIdnaniSolver>());
-  std::mt19937 rng(3);
-  std::vector<qp::QpProblem> problems;
-  for (int i = 0; i < 500; ++i) {
-    mpc.build(varied_input(rng, trot, i % 12));
-    problems.push_back(mpc.problem());
-  }
+// the QP solve alone, each problem in turn: p50 / p99 of single solves and the solver's work,
+// apart from the machine: bounds added and dropped per solve
+void time_solves(benchmark::State& bench, const std::vector<qp::QpProblem>& problems) {
   qp::GoldfarbIdnaniSolver solver;
   qp::QpSolution solution;
   std::vector<double> micros;
@@ -104,10 +97,22 @@ void BM_MpcSolveOnly(benchmark::State& bench) {
     }
   }
   report_percentiles(bench, micros);
-  // the solver's work, apart from the machine: bounds added and dropped per solve
   std::sort(iterations.begin(), iterations.end());
   bench.counters["iterations_p50"] = iterations[iterations.size() / 2];
   bench.counters["iterations_p99"] = iterations[iterations.size() * 99 / 100];
+}
+
+// the QP solve alone, on problems the MPC built
+void BM_MpcSolveOnly(benchmark::State& bench) {
+  const bool trot = bench.range(0) != 0;
+  ConvexMpc mpc(ConvexMpcConfig{}, std::make_unique<qp::GoldfarbIdnaniSolver>());
+  std::mt19937 rng(3);
+  std::vector<qp::QpProblem> problems;
+  for (int i = 0; i < 500; ++i) {
+    mpc.build(varied_input(rng, trot, i % 12));
+    problems.push_back(mpc.problem());
+  }
+  time_solves(bench, problems);
 }
 BENCHMARK(BM_MpcSolveOnly)->Arg(1)->Arg(0)->ArgName("trot")->Unit(benchmark::kMillisecond)->Iterations(3);
 
@@ -143,29 +148,12 @@ std::vector<qp::QpProblem> walking_problems(int gait, double vx_m_s) {
 void BM_MpcSolveWalking(benchmark::State& bench) {
   const bool flying = bench.range(0) != 0;
   const std::vector<qp::QpProblem> problems = walking_problems(flying ? 10 : 3, flying ? 1.6 : 1.0);
-  qp::GoldfarbIdnaniSolver solver;
-  qp::QpSolution solution;
-  std::vector<double> micros;
-  std::vector<int> iterations;
-  for (auto _ : bench) {
-    micros.clear();
-    iterations.clear();
-    for (const qp::QpProblem& p : problems) {
-      const auto start = std::chrono::steady_clock::now();
-      benchmark::DoNotOptimize(solver.solve(p, solution));
-      micros.push_back(std::chrono::duration<double, std::micro>(std::chrono::steady_clock::now() - start).count());
-      iterations.push_back(solution.iterations);
-    }
-  }
-  report_percentiles(bench, micros);
-  std::sort(iterations.begin(), iterations.end());
+  time_solves(bench, problems);
   bench.counters["problems"] = static_cast<double>(problems.size());
   bench.counters["variables_max"] = 0;
   for (const qp::QpProblem& p : problems) {
     bench.counters["variables_max"] = std::max<double>(bench.counters["variables_max"], p.hessian.rows());
   }
-  bench.counters["iterations_p50"] = iterations[iterations.size() / 2];
-  bench.counters["iterations_p99"] = iterations[iterations.size() * 99 / 100];
 }
 BENCHMARK(BM_MpcSolveWalking)->Arg(0)->Arg(1)->ArgName("flying_trot")->Unit(benchmark::kMillisecond)->Iterations(3);
 

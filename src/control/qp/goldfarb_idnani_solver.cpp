@@ -144,13 +144,7 @@ Eigen::Index GoldfarbIdnaniSolver::most_violated_bound(const QpProblem& problem)
   const Eigen::Index m_in = problem.ineq_matrix.rows();
   if (m_in == 0) return -1;
   if (rows_indexed_) {
-    for (Eigen::Index i = 0; i < m_in; ++i) {
-      double value = 0.0;
-      for (Eigen::Index k = row_start_[to_size(i)]; k < row_start_[to_size(i + 1)]; ++k) {
-        value += row_value_[to_size(k)] * x_(row_column_[to_size(k)]);
-      }
-      row_values_(i) = value;
-    }
+    for (Eigen::Index i = 0; i < m_in; ++i) row_values_(i) = indexed_row_dot_x(i);
   } else {
     // the first check of a solve: indexing the rows costs more than one dense product
     row_values_.head(m_in).noalias() = problem.ineq_matrix * x_.head(n_);
@@ -214,13 +208,17 @@ double GoldfarbIdnaniSolver::load_constraint(const QpProblem& problem, Eigen::In
   return -problem.ineq_upper(normal_row_);
 }
 
-double GoldfarbIdnaniSolver::normal_dot_x() const {
-  if (normal_row_ < 0) return normal_.head(n_).dot(x_.head(n_));
+double GoldfarbIdnaniSolver::indexed_row_dot_x(Eigen::Index row) const {
   double value = 0.0;
-  for (Eigen::Index k = row_start_[to_size(normal_row_)]; k < row_start_[to_size(normal_row_ + 1)]; ++k) {
+  for (Eigen::Index k = row_start_[to_size(row)]; k < row_start_[to_size(row + 1)]; ++k) {
     value += row_value_[to_size(k)] * x_(row_column_[to_size(k)]);
   }
-  return normal_sign_ * value;
+  return value;
+}
+
+double GoldfarbIdnaniSolver::normal_dot_x() const {
+  if (normal_row_ < 0) return normal_.head(n_).dot(x_.head(n_));
+  return normal_sign_ * indexed_row_dot_x(normal_row_);
 }
 
 void GoldfarbIdnaniSolver::compute_directions() {

@@ -63,6 +63,8 @@ class GoldfarbIdnaniSolver final : public QpSolver {
   void index_inequality_rows(const QpProblem& problem);
   // selects the normal and the bound of a constraint id, returns the bound
   double load_constraint(const QpProblem& problem, Eigen::Index id);
+  // C_row x through the row's indexed nonzeros
+  double indexed_row_dot_x(Eigen::Index row) const;
   // n_p' x of the selected normal
   double normal_dot_x() const;
   void compute_directions();

@@ -40,6 +40,26 @@ MpcInput standing_input(double vx_ref = 0.0, bool trot = false) {
   return in;
 }
 
+// the MPC's cost of every foot's force at every step (12 per step, world frame): the discretised
+// model rolled forward one step at a time, each step's lever arms from where the COM is then
+double rollout_cost_of(const MpcInput& in, const Eigen::VectorXd& u) {
+  const ConvexMpcConfig config;
+  StateVector x = in.x0;
+  double cost = 0.0;
+  for (int k = 0; k < kMpcHorizon; ++k) {
+    std::array<Eigen::Vector3d, kNumLegs> lever = in.foot_from_com;
+    for (auto& r : lever) r -= in.com_shift[k];
+    Eigen::Matrix<double, kSrbStates, kSrbStates> a, ad;
+    Eigen::Matrix<double, kSrbStates, 12> b, bd;
+    ConvexMpc::continuous_dynamics(config, in.x0[2], lever, a, b);
+    ConvexMpc::discretize(a, b, config.dt_s, ad, bd);
+    x = ad * x + bd * u.segment<12>(12 * k);
+    for (int s = 0; s < 12; ++s) cost += config.state_weights[s] * std::pow(x[s] - in.x_ref[k][s], 2);
+    cost += config.force_weight * u.segment<12>(12 * k).squaredNorm();
+  }
+  return cost;
+}
+
 std::unique_ptr<ConvexMpc> make_mpc() {
   return std::make_unique<ConvexMpc>(ConvexMpcConfig{}, std::make_unique<qp::GoldfarbIdnaniSolver>());
 }
@@ -224,23 +244,7 @@ TEST(ConvexMpc, QpCostMatchesAStepByStepRolloutWithLeverArmsFollowingTheCom) {
   const Eigen::MatrixXd h = p.hessian.selfadjointView<Eigen::Lower>();
   auto qp_cost = [&](const Eigen::VectorXd& u) { return 0.5 * u.dot(h * u) + p.linear.dot(u); };
   // independent: roll the discretised model forward one step at a time and add up the cost
-  const ConvexMpcConfig config;
-  auto rollout_cost = [&](const Eigen::VectorXd& u) {
-    StateVector x = in.x0;
-    double cost = 0.0;
-    for (int k = 0; k < kMpcHorizon; ++k) {
-      std::array<Eigen::Vector3d, kNumLegs> lever = in.foot_from_com;
-      for (auto& r : lever) r -= in.com_shift[k];
-      Eigen::Matrix<double, kSrbStates, kSrbStates> a, ad;
-      Eigen::Matrix<double, kSrbStates, 12> b, bd;
-      ConvexMpc::continuous_dynamics(config, in.x0[2], lever, a, b);
-      ConvexMpc::discretize(a, b, config.dt_s, ad, bd);
-      x = ad * x + bd * u.segment<12>(12 * k);
-      for (int s = 0; s < 12; ++s) cost += config.state_weights[s] * std::pow(x[s] - in.x_ref[k][s], 2);
-      cost += config.force_weight * u.segment<12>(12 * k).squaredNorm();
-    }
-    return cost;
-  };
+  auto rollout_cost = [&](const Eigen::VectorXd& u) { return rollout_cost_of(in, u); };
   std::mt19937 rng(5);
   std::uniform_real_distribution<double> force(-10.0, 30.0);
   Eigen::VectorXd u1(h.rows()), u2(h.rows());
@@ -272,31 +276,19 @@ TEST(ConvexMpc, QpMatchesARolloutWhenSwingFeetLeaveStepsWithFewerForcesOrNone) {
   EXPECT_EQ(p.hessian, p.hessian.transpose());
   const Eigen::MatrixXd& h = p.hessian;
   auto qp_cost = [&](const Eigen::VectorXd& u) { return 0.5 * u.dot(h * u) + p.linear.dot(u); };
-  const ConvexMpcConfig config;
   // independent: spread the kept forces over all feet (swing feet push nothing) and roll out
   auto rollout_cost = [&](const Eigen::VectorXd& kept) {
-    StateVector x = in.x0;
-    double cost = 0.0;
+    Eigen::VectorXd u = Eigen::VectorXd::Zero(12 * kMpcHorizon);
     Eigen::Index next = 0;
     for (int k = 0; k < kMpcHorizon; ++k) {
-      Eigen::Matrix<double, 12, 1> u = Eigen::Matrix<double, 12, 1>::Zero();
       for (std::size_t leg = 0; leg < kNumLegs; ++leg) {
         if (!in.contact[k][leg]) continue;
-        u.segment<3>(3 * static_cast<Eigen::Index>(leg)) = kept.segment<3>(next);
+        u.segment<3>(12 * k + 3 * static_cast<Eigen::Index>(leg)) = kept.segment<3>(next);
         next += 3;
       }
-      std::array<Eigen::Vector3d, kNumLegs> lever = in.foot_from_com;
-      for (auto& r : lever) r -= in.com_shift[k];
-      Eigen::Matrix<double, kSrbStates, kSrbStates> a, ad;
-      Eigen::Matrix<double, kSrbStates, 12> b, bd;
-      ConvexMpc::continuous_dynamics(config, in.x0[2], lever, a, b);
-      ConvexMpc::discretize(a, b, config.dt_s, ad, bd);
-      x = ad * x + bd * u;
-      for (int s = 0; s < 12; ++s) cost += config.state_weights[s] * std::pow(x[s] - in.x_ref[k][s], 2);
-      cost += config.force_weight * u.squaredNorm();
     }
     EXPECT_EQ(next, kept.size());
-    return cost;
+    return rollout_cost_of(in, u);
   };
   ASSERT_EQ(h.rows(), 3 * (2 * 8 + 3));  // eight steps on two feet, one on three, one on none
   std::mt19937 rng(6);
