@@ -253,11 +253,12 @@ McConfig load_config(const std::string& path) {
   if (root["locomotion"]) {
     const SectionReader s(root["locomotion"], path, "locomotion",
                           {"velocity_trim_gain_per_s", "early_touchdown_force_n", "foothold_on_own_ground",
-                           "late_touchdown_reach_m"});
+                           "late_touchdown_reach_m", "slip_response"});
     s.number("velocity_trim_gain_per_s", config.locomotion.velocity_trim_gain_per_s, 0.0, 10.0);
     s.number("early_touchdown_force_n", config.locomotion.early_touchdown_force_n, 0.0, 200.0);
     s.flag("foothold_on_own_ground", config.locomotion.foothold_on_own_ground);
     s.number("late_touchdown_reach_m", config.locomotion.late_touchdown_reach_m, 0.0, 0.2);
+    s.flag("slip_response", config.locomotion.slip_response);
   }
   if (root["locomotion_limits"]) read_locomotion_limits_section(root["locomotion_limits"], path, config.locomotion_limits);
   check_robot_fits(root, path, config);

@@ -199,9 +199,14 @@ void ConvexMpc::build(const MpcInput& input) {
     problem_.ineq_matrix(row, col + 2) = 1.0;  // 0 <= fz <= fmax
     problem_.ineq_lower[row] = 0.0;
     problem_.ineq_upper[row] = config_.force_max_n;
-    for (int side = 0; side < 4; ++side) {  // |fx| <= mu fz, |fy| <= mu fz
+    for (int side = 0; side < 4; ++side) {
       const int r = row + 1 + side;
-      problem_.ineq_matrix(r, col + side / 2) = (side % 2 == 0) ? 1.0 : -1.0;
+      if (input.pyramid == FrictionPyramid::Square) {  // +-fx <= mu fz, +-fy <= mu fz
+        problem_.ineq_matrix(r, col + side / 2) = (side % 2 == 0) ? 1.0 : -1.0;
+      } else {  // +-fx +-fy <= mu fz
+        problem_.ineq_matrix(r, col) = (side % 2 == 0) ? 1.0 : -1.0;
+        problem_.ineq_matrix(r, col + 1) = (side / 2 == 0) ? 1.0 : -1.0;
+      }
       problem_.ineq_matrix(r, col + 2) = -mu;
       problem_.ineq_lower[r] = -inf;
       problem_.ineq_upper[r] = 0.0;

@@ -40,6 +40,16 @@ struct ConvexMpcConfig {
   double force_max_n = 150.0;
 };
 
+// the friction pyramid the MPC keeps each foot's force within
+enum class FrictionPyramid {
+  // |fx| <= mu fz and |fy| <= mu fz (world axes): up to mu sqrt(2) along a diagonal, within a
+  // ground of friction 2 mu in every direction
+  Square,
+  // |fx| + |fy| <= mu fz: within mu in every direction (MuJoCo's pyramidal cone of friction mu
+  // is this diamond, a real ground's round cone holds it)
+  Diamond,
+};
+
 // what the MPC needs each solve
 struct MpcInput {
   Eigen::Matrix<double, kSrbStates, 1> x0;  // current state (g entry = -robot::kGravityMPerS2)
@@ -60,6 +70,7 @@ struct MpcInput {
   std::array<std::array<bool, kNumLegs>, kMpcHorizon> contact;
   // friction coefficient of the ground for this solve; 0: the configured one
   double friction = 0.0;
+  FrictionPyramid pyramid = FrictionPyramid::Square;
   // a planted stand that leans on its feet instead of stepping: x, y weigh stand_position_weight
   bool hold_position = false;
 };

@@ -33,7 +33,8 @@ LocomotionController::LocomotionController(const LocomotionConfig& config, std::
     : config_(config),
       mpc_(config_.mpc, std::move(solver)),
       worker_(mpc_),
-      scheduler_(config.tick_s * config.ticks_per_segment) {
+      scheduler_(config.tick_s * config.ticks_per_segment),
+      slip_watch_(config.slip_watch) {
   target_.gait = *gait_pattern(kStandGaitId);
   target_.height_m = config.default_height_m;
   target_.step_height_front_m = target_.step_height_rear_m = find_gait(kStandGaitId)->default_step_height_m;
@@ -199,6 +200,7 @@ void LocomotionController::post_mpc(const RobotState& state) {
             : Eigen::Vector3d(foothold_world(leg, phase, state) - lever_origin_world);
   }
   in.friction = user.friction;
+  if (responding_to_slip()) in.pyramid = FrictionPyramid::Diamond;
   worker_.post(in);
 }
 
@@ -214,6 +216,23 @@ void LocomotionController::collect_mpc() {
   }
   consecutive_failures_ = 0;
   forces_ = mpc_output_.forces;
+}
+
+void LocomotionController::observe_slip(std::size_t leg, const LegPhase& phase, const RobotState& state,
+                                        const Eigen::Matrix3d& body_to_world) {
+  // a foot that reaches for a lower ground is moving on purpose
+  const bool planted = phase.stance && !reaching_[leg];
+  double speed_m_s = 0.0;
+  if (planted) {
+    // the contact point's velocity: the trunk's estimate less what it would be were the foot
+    // rolling without slipping (a foot's centre moves as its sphere rolls: 0.1 m/s at a shank
+    // turning 5 rad/s, as much as a slip)
+    const Eigen::Vector3d contact_velocity_world =
+        state.velocity_world - trunk_velocity_over_rolling_foot(leg, body_to_world, state.omega_body,
+                                                                leg_vector(state.q, leg), leg_vector(state.qd, leg));
+    speed_m_s = contact_velocity_world.head<2>().norm();
+  }
+  slip_watch_.observe(leg, planted, phase.stance_phase, speed_m_s);
 }
 
 void LocomotionController::command_stance_leg(std::size_t leg, const RobotState& state, JointCommand& command) {
@@ -240,7 +259,7 @@ void LocomotionController::command_stance_leg(std::size_t leg, const RobotState&
     command.q_des[i] = state.q[i];
     command.qd_des[i] = qd_des[j];
     command.kp[i] = 0.0;
-    command.kd[i] = config_.stance_kd;
+    command.kd[i] = responding_to_slip() ? config_.slippery_stance_kd : config_.stance_kd;
     command.tau_ff[i] = tau[j];
   }
 }
@@ -511,6 +530,7 @@ void LocomotionController::compute(const RobotState& state, JointCommand& comman
       touching_ticks_[leg] = 0;
       reach_from_world_[leg] = foot_in_world(state, body_to_world, leg);
     }
+    observe_slip(leg, phase, state, body_to_world);
     if (!phase.stance) reaching_[leg] = false;
     if (reaching_[leg]) {
       command_reaching_leg(leg, state, command);

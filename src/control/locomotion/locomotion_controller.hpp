@@ -14,6 +14,7 @@
 #include "control/locomotion/gait.hpp"
 #include "control/locomotion/swing_trajectory.hpp"
 #include "control/locomotion/mpc_worker.hpp"
+#include "control/locomotion/slip_watch.hpp"
 #include "core/contact_plan.hpp"
 #include "core/robot_model.hpp"
 #include "core/robot_state.hpp"
@@ -33,6 +34,16 @@ struct LocomotionConfig {
   // joint damping toward a foot at rest on the ground; its forces are outside the MPC's friction
   // cone, and at 0.8 they made loaded feet slip in turns; at 0.2 a 15 N s push fell
   double stance_kd = 0.25;
+  // ... and, with slip_response on, on a ground the feet slide on (slip_watch): there the damping
+  // is what holds a sliding foot back, and the MPC keeps its forces in the diamond pyramid
+  // (FrictionPyramid::Diamond, within the friction coefficient in every direction). On a floor of
+  // friction 0.43 either alone left about half the falls, both always on none, but on the model's
+  // floor both always on fell more than today's tuning; switched by the watch, 11 falls where
+  // there were 58 on 0.43, 2 where there were 0 on the model's floor (tuning seeds,
+  // docs/benchmarks/locomotion-log.md, 2026-12-02). Off: the product's tuning
+  bool slip_response = false;
+  double slippery_stance_kd = 0.8;
+  SlipWatchConfig slip_watch;
   // slow integral on the height error: joint friction otherwise leaves a steady offset
   double height_integral_gain = 2.0;  // 1/s
   double height_integral_limit_m = 0.03;
@@ -184,6 +195,10 @@ class LocomotionController {
   bool healthy() const { return consecutive_failures_ < config_.failed_solves_to_give_up; }
   const LocomotionTelemetry& telemetry() const { return telemetry_; }
   const GaitScheduler& scheduler() const { return scheduler_; }
+  // what the feet have told of the ground; kept across reset(): the ground stays what it was
+  const SlipWatch& slip_watch() const { return slip_watch_; }
+  // the stance legs and the MPC act for a slippery ground now (LocomotionConfig::slip_response)
+  bool responding_to_slip() const { return config_.slip_response && slip_watch_.slippery(); }
   const Eigen::Vector3d& ramped_velocity() const { return velocity_; }
   // each leg's place in the schedule; after compute(), the contacts planned for the next tick
   ContactSchedule contact_schedule() const;
@@ -198,6 +213,8 @@ class LocomotionController {
   // the integral action on the velocity error (velocity_trim_gain_per_s)
   void update_velocity_trim(const RobotState& state);
   void change_pattern_if_due(const RobotState& state);
+  // one tick of a leg for the slip watch: a planted foot's horizontal speed over the ground
+  void observe_slip(std::size_t leg, const LegPhase& phase, const RobotState& state, const Eigen::Matrix3d& body_to_world);
   void post_mpc(const RobotState& state);
   void collect_mpc();
   // where a swinging foot (its centre) will land
@@ -219,6 +236,7 @@ class LocomotionController {
   ConvexMpc mpc_;
   MpcWorker worker_;
   GaitScheduler scheduler_;
+  SlipWatch slip_watch_;
   LocomotionTarget target_;
   GaitPattern pending_gait_;
   bool gait_change_pending_ = false;

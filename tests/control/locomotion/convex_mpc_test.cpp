@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Dense>
+#include <algorithm>
 #include <cmath>
 #include <random>
 
@@ -318,4 +319,38 @@ TEST(ConvexMpc, NonFiniteInputIsRefusedWithoutSolving) {
 }
 
 }  // namespace
+}  // namespace cerebellum
+
+namespace cerebellum {
+namespace {
+// a stand asked to speed up hard along the diagonal: the forces lean as far as the pyramid lets them
+MpcInput diagonal_rush_input(FrictionPyramid pyramid) {
+  MpcInput in = standing_input();
+  for (auto& x : in.x_ref) x[9] = x[10] = 3.0;
+  in.pyramid = pyramid;
+  return in;
+}
+
+double largest_diagonal_share(const MpcOutput& out) {
+  double share = 0.0;
+  for (const auto& f : out.forces) {
+    if (f.z() > 1.0) share = std::max(share, (std::abs(f.x()) + std::abs(f.y())) / f.z());
+  }
+  return share;
+}
+}  // namespace
+
+TEST(ConvexMpc, TheDiamondPyramidKeepsEachFootWithinTheFrictionCoefficientAlongTheDiagonal) {
+  auto mpc = make_mpc();
+  const double mu = ConvexMpcConfig{}.friction;
+  const MpcOutput square = mpc->solve(diagonal_rush_input(FrictionPyramid::Square));
+  ASSERT_EQ(square.status, qp::QpStatus::Solved);
+  // the square's corner reaches mu along each axis at once
+  EXPECT_GT(largest_diagonal_share(square), 1.5 * mu);
+  const MpcOutput diamond = mpc->solve(diagonal_rush_input(FrictionPyramid::Diamond));
+  ASSERT_EQ(diamond.status, qp::QpStatus::Solved);
+  EXPECT_LE(largest_diagonal_share(diamond), mu + 1e-6);
+  EXPECT_GT(largest_diagonal_share(diamond), 0.9 * mu);  // and it leans as far as that
+}
+
 }  // namespace cerebellum
