@@ -5,9 +5,10 @@
 // stances (an exponential average) above enter_share marks the ground slippery, under
 // leave_share no longer (the hysteresis keeps one fast turn's burst from toggling it).
 //
-// Measured on the random-command soak (docs/benchmarks/locomotion-log.md, 2026-12-02): on the
-// model's floor (friction 0.8) about 4 % of stances slide faster than 0.1 m/s, on a floor of
-// friction 0.43 about 21 %.
+// Measured on the random-command soak, two tuning seeds per floor (docs/benchmarks/locomotion-log.md,
+// 2026-12-02): with these defaults the ground read slippery for about 3 % of the stances on the
+// model's floor (friction 0.8) and about 40 % on a floor of friction 0.43. (Before the rolling
+// was taken out of the speed the caller gives, 4 % and 21 % of single stances slid past 0.1 m/s.)
 #pragma once
 
 #include <array>
