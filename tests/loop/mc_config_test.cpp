@@ -124,6 +124,16 @@ TEST(McConfig, TheShippedExtendedTerrainFileTurnsOnTheStepReflexesTheHigherSwing
                    find_gait(kFlyingTrotGaitId)->velocity_max[0]);
 }
 
+TEST(McConfig, TheShippedExtendedSlipperyFileTurnsOnTheSlipResponseAndNothingElseBeyondTheProduct) {
+  const McConfig config = load_config(std::string(CEREBELLUM_SOURCE_DIR) + "/config/extended-slippery.yaml");
+  EXPECT_TRUE(config.locomotion.slip_response);
+  EXPECT_FALSE(default_config().locomotion.slip_response) << "the product's tuning stays the default";
+  EXPECT_DOUBLE_EQ(config.locomotion.velocity_trim_gain_per_s, 0.0);
+  EXPECT_DOUBLE_EQ(config.locomotion.early_touchdown_force_n, 0.0);
+  EXPECT_DOUBLE_EQ(config.locomotion_limits.velocity(kFlyingTrotGaitId)->max.x(),
+                   find_gait(kFlyingTrotGaitId)->velocity_max[0]);
+}
+
 TEST(McConfig, UnknownKeyIsNamedWithTheAcceptedKeys) {
   const std::string error = load_error("robot:\n  modle: x.xml\n");
   EXPECT_NE(error.find("robot.modle is not a known key"), std::string::npos) << error;

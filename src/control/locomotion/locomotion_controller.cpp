@@ -112,10 +112,18 @@ void LocomotionController::ramp_velocity() {
       goal[axis] = std::clamp(goal[axis], running.velocity_min[axis], running.velocity_max[axis]);
     }
   }
-  const double dv = config_.max_accel_m_s2 * config_.tick_s;
+  // on a slippery ground (slip_response) the feet carry less: gentler ramps, wider turns
+  const bool slippery = responding_to_slip();
+  const double ramp_share = slippery ? config_.slippery_ramp_share : 1.0;
+  if (slippery) {
+    const double speed = goal.head<2>().norm();
+    if (speed * std::abs(goal.z()) > config_.slippery_centripetal_accel_m_s2)
+      goal.z() = std::copysign(config_.slippery_centripetal_accel_m_s2 / speed, goal.z());
+  }
+  const double dv = config_.max_accel_m_s2 * ramp_share * config_.tick_s;
   velocity_.x() = approach(velocity_.x(), goal.x(), dv);
   velocity_.y() = approach(velocity_.y(), goal.y(), dv);
-  velocity_.z() = approach(velocity_.z(), goal.z(), config_.max_yaw_accel_rad_s2 * config_.tick_s);
+  velocity_.z() = approach(velocity_.z(), goal.z(), config_.max_yaw_accel_rad_s2 * ramp_share * config_.tick_s);
   velocity_before_ +=
       (velocity_ - velocity_before_) * std::min(1.0, config_.tick_s / config_.push_reference_time_constant_s);
 }

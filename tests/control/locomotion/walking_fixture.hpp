@@ -19,8 +19,8 @@ namespace cerebellum::testing {
 
 class StandThenWalk final : public MotionController {
  public:
-  explicit StandThenWalk(std::unique_ptr<qp::QpSolver> solver)
-      : stand_(default_stand_up_config()), walk_(LocomotionConfig{}, std::move(solver)) {}
+  explicit StandThenWalk(std::unique_ptr<qp::QpSolver> solver, const LocomotionConfig& config = {})
+      : stand_(default_stand_up_config()), walk_(config, std::move(solver)) {}
 
   void compute(const RobotState& state, JointCommand& command) override {
     if (state.time_s < kStandSeconds) {
@@ -62,8 +62,11 @@ inline LocomotionTarget walk_command(int gait, double vx, double vy = 0.0, doubl
 }
 
 struct WalkingSim {
-  explicit WalkingSim(std::unique_ptr<qp::QpSolver> solver = std::make_unique<qp::GoldfarbIdnaniSolver>())
-      : backend(config()), controller(std::move(solver)), loop(backend, estimator, controller, GuardLimits{}, 0.002) {}
+  explicit WalkingSim(std::unique_ptr<qp::QpSolver> solver = std::make_unique<qp::GoldfarbIdnaniSolver>(),
+                      const LocomotionConfig& locomotion = {})
+      : backend(config()),
+        controller(std::move(solver), locomotion),
+        loop(backend, estimator, controller, GuardLimits{}, 0.002) {}
 
   static MujocoBackendConfig config() {
     MujocoBackendConfig c;
