@@ -16,6 +16,14 @@ namespace {
 
 double wrap_angle(double a) { return std::remainder(a, 2.0 * robot::kPi); }
 
+// the turn rate at speed, lowered until |v| |yaw rate| is within the centripetal acceleration
+// the feet can carry
+void limit_turn_at_speed(Eigen::Vector3d& velocity, double max_centripetal_accel_m_s2) {
+  const double speed = velocity.head<2>().norm();
+  if (speed * std::abs(velocity.z()) > max_centripetal_accel_m_s2)
+    velocity.z() = std::copysign(max_centripetal_accel_m_s2 / speed, velocity.z());
+}
+
 double approach(double current, double target, double max_step) {
   return current + std::clamp(target - current, -max_step, max_step);
 }
@@ -80,11 +88,7 @@ bool LocomotionController::set_command(const LocomotionTarget& command) {
     target_.velocity[axis] =
         std::clamp(command.velocity[axis], command.gait.velocity_min[axis], command.gait.velocity_max[axis]);
   }
-  // the turn rate at speed is limited by the centripetal acceleration the feet can carry
-  const double speed = target_.velocity.head<2>().norm();
-  if (speed * std::abs(target_.velocity.z()) > config_.max_centripetal_accel_m_s2) {
-    target_.velocity.z() = std::copysign(config_.max_centripetal_accel_m_s2 / speed, target_.velocity.z());
-  }
+  limit_turn_at_speed(target_.velocity, config_.max_centripetal_accel_m_s2);
   if (new_gait) {
     pending_gait_ = command.gait;
     gait_change_pending_ = true;
@@ -115,11 +119,7 @@ void LocomotionController::ramp_velocity() {
   // on a slippery ground (slip_response) the feet carry less: gentler ramps, wider turns
   const bool slippery = responding_to_slip();
   const double ramp_share = slippery ? config_.slippery_ramp_share : 1.0;
-  if (slippery) {
-    const double speed = goal.head<2>().norm();
-    if (speed * std::abs(goal.z()) > config_.slippery_centripetal_accel_m_s2)
-      goal.z() = std::copysign(config_.slippery_centripetal_accel_m_s2 / speed, goal.z());
-  }
+  if (slippery) limit_turn_at_speed(goal, config_.slippery_centripetal_accel_m_s2);
   const double dv = config_.max_accel_m_s2 * ramp_share * config_.tick_s;
   velocity_.x() = approach(velocity_.x(), goal.x(), dv);
   velocity_.y() = approach(velocity_.y(), goal.y(), dv);

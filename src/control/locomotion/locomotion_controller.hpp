@@ -43,7 +43,7 @@ struct LocomotionConfig {
   // docs/benchmarks/locomotion-log.md, 2026-12-02). Off: the product's tuning
   bool slip_response = false;
   double slippery_stance_kd = 0.8;
-  // ... and there the commanded velocity changes slower and turns tighter less: the ramps
+  // ... and there the commanded velocity changes slower and turns at speed are wider: the ramps
   // (max_accel_m_s2, max_yaw_accel_rad_s2) times this share, and |v| |yaw rate| clamped at
   // slippery_centripetal_accel_m_s2 instead of max_centripetal_accel_m_s2
   double slippery_ramp_share = 0.5;
